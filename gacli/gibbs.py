@@ -1,0 +1,60 @@
+"""The Gibbs function G = ½ Σ m a² (eq. 14.17), Koenig's analogue for bodies (eq. 14.21).
+
+For a rigid body with centre-of-mass acceleration a, angular velocity ω and
+angular acceleration α (body axes, inertia I about the centre of mass),
+G = ½ M a² + ½ α·Iα + α·(ω × Iω) + terms free of accelerations. The
+equations of motion do not need G (:mod:`gacli.equations` takes ∂G/∂u̇_s
+directly); it is built here for display and as an independent check.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.kinematics import BodyMotion, Rates, configuration_chain
+from gacli.model import System
+
+
+def acceleration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr]:
+    """d/dt of everything, u included: u → u̇."""
+    chain = configuration_chain(system, rates)
+    chain.update(dict(zip(rates.speeds, rates.speed_rates)))
+    return chain
+
+
+def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...], whole: bool = False) -> sp.Expr:
+    """G in the u̇ (eq. 14.17 with 14.21); only its acceleration terms unless ``whole``.
+
+    Accelerations are differentiated afresh from the velocities (not taken
+    from the split V u̇ + a_rest), so G checks the direct route.
+    """
+    chain = acceleration_chain(system, rates)
+    G = sp.S.Zero
+    for motion in motions:
+        G += _body_gibbs(motion, rates, chain)
+    if whole:
+        return G
+    return G - G.xreplace({a: 0 for a in rates.speed_rates})
+
+
+def _body_gibbs(motion: BodyMotion, rates: Rates, chain) -> sp.Expr:
+    u = sp.Matrix(rates.speeds)
+    v = motion.linear.partials * u + motion.linear.velocity0
+    a = v.applyfunc(lambda e: S.time_derivative(e, chain))
+    G = motion.body.mass * (a.T * a)[0] / 2
+    if motion.angular is not None:
+        I = motion.body.inertia
+        w = motion.angular.partials * u + motion.angular.velocity0
+        alpha = w.applyfunc(lambda e: S.time_derivative(e, chain))
+        G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
+    return G
+
+
+def gibbs_coefficients(G: sp.Expr, rates: Rates) -> tuple[sp.Matrix, sp.Matrix]:
+    """(H, g) with G = ½ u̇ᵀ H u̇ + gᵀ u̇ + (terms free of u̇)."""
+    ud = rates.speed_rates
+    zero = {a: 0 for a in ud}
+    H = sp.Matrix(len(ud), len(ud), lambda i, j: sp.diff(G, ud[i], ud[j]))
+    g = sp.Matrix([sp.diff(G, a).xreplace(zero) for a in ud])
+    return H, g

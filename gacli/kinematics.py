@@ -1,0 +1,259 @@
+"""Rates, velocities and accelerations in terms of the independent rates.
+
+Step 1 of the chapter's solution procedure: the constraints (eq. 14.1) and the
+quasi-coordinate definitions (eq. 14.2) are linear in the n + p rates; with k
+of them chosen as the independent rates u, the others follow as
+ṙ = β u + β₀ (eqs. 14.4, 14.7). Then each body's velocity is V u + v₀ and its
+acceleration V u̇ + a_rest (eq. 14.14), where V holds the partial velocities
+(the α_rs of eq. 14.6) and a_rest is free of the u̇.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.errors import Diagnostic, SystemFileError
+from gacli.model import Body, Form, System
+
+# Ranks are decided at a random configuration: a generic rank of a matrix of
+# functions equals its rank at almost every point. Fixed seed: same answer
+# every run.
+_SEED = 20261122
+_RANK_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class Rates:
+    """ṙ = β u + β₀ for every coordinate and quasi-coordinate (eq. 14.7)."""
+
+    names: tuple[str, ...]
+    independent: tuple[str, ...]
+    chosen_automatically: bool
+    beta: sp.ImmutableMatrix
+    beta0: sp.ImmutableMatrix
+
+    @property
+    def k(self) -> int:
+        return len(self.independent)
+
+    @property
+    def speeds(self) -> tuple[sp.Symbol, ...]:
+        """The independent rates u."""
+        return tuple(S.rate(n) for n in self.independent)
+
+    @property
+    def speed_rates(self) -> tuple[sp.Symbol, ...]:
+        """Their time derivatives u̇."""
+        return tuple(S.rate(n, 2) for n in self.independent)
+
+    def rate(self, name: str) -> sp.Expr:
+        i = self.names.index(name)
+        return sum((self.beta[i, s] * u for s, u in enumerate(self.speeds)), self.beta0[i])
+
+    def rows(self, names) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
+        idx = [self.names.index(n) for n in names]
+        return self.beta.extract(idx, list(range(self.k))), self.beta0.extract(idx, [0])
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Velocity and acceleration of a point, or angular ones of a body, in u and u̇.
+
+    velocity = partials · u + velocity0; acceleration = partials · u̇ + acceleration_rest.
+    """
+
+    partials: sp.ImmutableMatrix
+    velocity0: sp.ImmutableMatrix
+    acceleration_rest: sp.ImmutableMatrix
+
+
+@dataclass(frozen=True)
+class BodyMotion:
+    body: Body
+    linear: Motion
+    angular: Motion | None
+
+
+# -- step 1: solve the linear relations among the rates ----------------------
+
+def relation_rows(system: System) -> tuple[list[tuple[str, object, Form]], list[str]]:
+    """The rows A ṙ + a₀ = 0: constraints (14.1) then quasi definitions (14.2)."""
+    rows = [(f"constraints[{i}]", c.location, c.form) for i, c in enumerate(system.constraints)]
+    for q in system.quasi_coordinates:
+        if q.differential is not None:
+            own = Form(((q.name, sp.S.One),))
+            rows.append((f"quasi_coordinates.{q.name}", q.location, _subtract(own, q.differential)))
+    return rows, list(system.rate_names)
+
+
+def _subtract(a: Form, b: Form) -> Form:
+    names = list(dict.fromkeys(a.names + b.names))
+    coefficients = tuple((n, a.coefficient(n) - b.coefficient(n)) for n in names)
+    return Form(tuple((n, c) for n, c in coefficients if c != 0), a.dt - b.dt)
+
+
+def solve_rates(system: System) -> Rates:
+    """Every rate as an affine function of the k independent rates (eq. 14.7)."""
+    rows, names = relation_rows(system)
+    A = sp.Matrix([[form.coefficient(n) for n in names] for _, _, form in rows]) if rows else sp.zeros(0, len(names))
+    a0 = sp.Matrix([form.dt for _, _, form in rows]) if rows else sp.zeros(0, 1)
+    k = len(names) - len(rows)
+    numeric = _numeric(A, system)
+    _check_rank(system, rows, numeric)
+    if k <= 0:
+        raise _error(system, system.location, "",
+                     f"the system has no degree of freedom: k = n + p - d - ℓ = {k}")
+    independent, automatic = _choose_independent(system, names, numeric, k)
+    dependent = [n for n in names if n not in independent]
+    beta, beta0 = _solve(A, a0, names, independent, dependent)
+    return Rates(tuple(names), tuple(independent), automatic, beta, beta0)
+
+
+def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
+    if A.rows == 0:
+        return np.zeros((0, A.cols))
+    point = random_point(A.free_symbols)
+    values = A.xreplace(point).evalf()
+    return np.array(values.tolist(), dtype=float)
+
+
+def random_point(symbols, seed: int = _SEED) -> dict[sp.Symbol, sp.Float]:
+    """Deterministic generic values in [0.4, 1.6] for the given symbols."""
+    rng = random.Random(seed)
+    ordered = sorted(symbols, key=lambda s: s.name)
+    return {s: sp.Float(rng.uniform(0.4, 1.6)) for s in ordered}
+
+
+def _rank(matrix: np.ndarray) -> int:
+    if matrix.size == 0:
+        return 0
+    return int(np.linalg.matrix_rank(matrix, tol=_RANK_TOL * max(1.0, np.abs(matrix).max())))
+
+
+def _check_rank(system: System, rows, numeric: np.ndarray) -> None:
+    """The matrix [B; C] must have full rank (the condition below eq. 14.3)."""
+    if _rank(numeric) == numeric.shape[0]:
+        return
+    kept: list[int] = []
+    diagnostics = []
+    for i, (where, location, _) in enumerate(rows):
+        if _rank(numeric[kept + [i]]) > len(kept):
+            kept.append(i)
+            continue
+        others = ", ".join(rows[j][0] for j in kept) or "nothing"
+        message = ("this relation is not independent of the others (the matrix of constraint and "
+                   "quasi-coordinate coefficients must have full rank)")
+        diagnostics.append(Diagnostic(location, message, where, f"it depends on {others}"))
+    raise SystemFileError(diagnostics)
+
+
+def _choose_independent(system: System, names: list[str], numeric: np.ndarray, k: int) -> tuple[list[str], bool]:
+    automatic = _earliest_independent(names, numeric)
+    if system.independent is None:
+        return automatic, True
+    given = list(system.independent)
+    if len(given) != k:
+        raise _error(system, system.independent_location, "independent",
+                     f"expected {k} independent names (k = n + p - d - ℓ = {k}), found {len(given)}",
+                     f"for example: [{', '.join(automatic)}]")
+    dependent = [names.index(n) for n in names if n not in given]
+    if _rank(numeric[:, dependent]) < len(dependent):
+        dep = ", ".join(names[i] for i in dependent)
+        raise _error(system, system.independent_location, "independent",
+                     f"the rates of {', '.join(given)} cannot all be chosen freely: "
+                     f"the constraints do not determine {dep} from them",
+                     f"a valid choice is [{', '.join(automatic)}]")
+    return given, False
+
+
+def _earliest_independent(names: list[str], numeric: np.ndarray) -> list[str]:
+    """The earliest-declared valid independent set.
+
+    The dependent rates must index a basis of the columns; taking columns
+    greedily from the last leaves the earliest names independent.
+    """
+    basis: list[int] = []
+    for j in reversed(range(len(names))):
+        if _rank(numeric[:, basis + [j]]) > len(basis):
+            basis.append(j)
+    return [n for j, n in enumerate(names) if j not in basis]
+
+
+def _solve(A, a0, names, independent, dependent):
+    n, k = len(names), len(independent)
+    beta = sp.zeros(n, k)
+    beta0 = sp.zeros(n, 1)
+    for s, name in enumerate(independent):
+        beta[names.index(name), s] = 1
+    if dependent:
+        Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
+        Ai = A.extract(list(range(A.rows)), [names.index(i) for i in independent])
+        rhs = (-Ai).row_join(-a0)
+        solution = Ad.LUsolve(rhs).applyfunc(_tidy)
+        for r, name in enumerate(dependent):
+            beta[names.index(name), :] = solution[r, :k]
+            beta0[names.index(name), 0] = solution[r, k]
+    return sp.ImmutableMatrix(beta), sp.ImmutableMatrix(beta0)
+
+
+def _tidy(expr: sp.Expr) -> sp.Expr:
+    """Cancel rational clutter that elimination leaves, while it is cheap."""
+    return sp.cancel(expr) if sp.count_ops(expr) < 200 else expr
+
+
+def _error(system: System, location, where: str, message: str, hint: str = "") -> SystemFileError:
+    return SystemFileError([Diagnostic(location, message, where, hint)])
+
+
+# -- step 2: velocities and accelerations ------------------------------------
+
+def function_chain(system: System) -> dict[sp.Symbol, sp.Symbol]:
+    """d/dt of the free functions of time: Omega → dot(Omega) → ddot(Omega) → ..."""
+    return {S.rate(f.name, o): S.rate(f.name, o + 1) for f in system.free_functions for o in range(4)}
+
+
+def configuration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr]:
+    """d/dt of each symbol that moves, holding u fixed: q̇ = β u + β₀ and the functions."""
+    chain: dict[sp.Symbol, sp.Expr] = {S.value(c.name): rates.rate(c.name) for c in system.coordinates}
+    chain.update(function_chain(system))
+    return chain
+
+
+def point_motion(position, system: System, rates: Rates, chain) -> Motion:
+    """v = J β u + (J β₀ + ∂r/∂t), and the u̇-free part of its derivative (eq. 14.14)."""
+    r = sp.Matrix(position)
+    coords = [c.name for c in system.coordinates]
+    J = r.jacobian([S.value(c) for c in coords])
+    b, b0 = rates.rows(coords)
+    functions = function_chain(system)
+    explicit = r.applyfunc(lambda e: S.time_derivative(e, functions))
+    return _motion(J * b, J * b0 + explicit, rates, chain)
+
+
+def rotation_motion(rotation, system: System, rates: Rates, chain) -> Motion:
+    """ω = W β u + (W β₀ + W₀) from the rotation forms; α from its derivative."""
+    names = list(rates.names)
+    W = sp.Matrix([[form.coefficient(n) for n in names] for form in rotation])
+    W0 = sp.Matrix([form.dt for form in rotation])
+    return _motion(W * rates.beta, W * rates.beta0 + W0, rates, chain)
+
+
+def _motion(partials, v0, rates: Rates, chain) -> Motion:
+    velocity = partials * sp.Matrix(rates.speeds) + v0
+    rest = velocity.applyfunc(lambda e: S.time_derivative(e, chain))
+    return Motion(sp.ImmutableMatrix(partials), sp.ImmutableMatrix(v0), sp.ImmutableMatrix(rest))
+
+
+def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
+    chain = configuration_chain(system, rates)
+    out = []
+    for body in system.bodies:
+        linear = point_motion(body.position, system, rates, chain)
+        angular = rotation_motion(body.rotation, system, rates, chain) if body.is_rigid else None
+        out.append(BodyMotion(body, linear, angular))
+    return tuple(out)

@@ -1,0 +1,441 @@
+"""Load a system file: source → declarations → parsed expressions → System.
+
+Each expression is parsed by our own grammar and built under the scope of
+the place it stands in, so a mass cannot name a coordinate and a position
+cannot name an input. All problems are collected and raised together as one
+:class:`~gacli.errors.SystemFileError`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.errors import Diagnostic, Location, SystemFileError
+from gacli.expr.build import BuildError, Scope, build
+from gacli.expr.grammar import FUNCTIONS, ParseError, parse
+from gacli.model import (
+    Body, Constraint, Coordinate, Force, Form, Function, Input, Parameter,
+    QuasiCoordinate, System, Torque,
+)
+from gacli.schema import BodyDecl, LoadDecl, SymbolDecl, SystemDecl, read_declarations
+from gacli.source import Scalar, SourceFile, parse_source, read_source
+
+RESERVED = {"t": "time", "pi": "the constant π", "dot": "the rate operator", "ddot": "the rate operator"}
+MAX_SYMBOLS = 500
+
+_KIND_WORDS = {
+    "parameter": "a parameter", "function": "a function", "input": "an input",
+    "coordinate": "a coordinate", "quasi": "a quasi-coordinate",
+}
+
+
+def load(path: str | Path) -> System:
+    """Read, parse and validate a system file.
+
+    Raises:
+        SystemFileError: with every problem found, each located in the file.
+    """
+    return load_source(read_source(path))
+
+
+def loads(text: str, path: str = "<string>") -> System:
+    """Like :func:`load`, from text in memory."""
+    return load_source(parse_source(text.encode("utf-8"), path))
+
+
+def load_source(source: SourceFile) -> System:
+    decl, diagnostics = read_declarations(source)
+    if diagnostics or decl is None:
+        raise SystemFileError(diagnostics)
+    builder = _Builder(decl)
+    system = builder.system()
+    if builder.diagnostics:
+        raise SystemFileError(builder.diagnostics)
+    return system
+
+
+@dataclass
+class _Builder:
+    decl: SystemDecl
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    # -- reporting ---------------------------------------------------------
+    @property
+    def source(self) -> SourceFile:
+        return self.decl.source
+
+    def error(self, node, where: str, message: str, hint: str = "", offset: int | None = None) -> None:
+        location = self.source.location(node, offset)
+        self.diagnostics.append(Diagnostic(location, message, where, hint))
+
+    def where_of(self, node) -> Location:
+        return self.source.location(node)
+
+    # -- expressions -------------------------------------------------------
+    def expression(self, text: Scalar | None, where: str, scope: Scope, start: int = 0, stop: int | None = None):
+        """Parse and build text[start:stop]; None (and a diagnostic) on error."""
+        if text is None:
+            return None
+        piece = text.text[start:stop]
+        try:
+            return build(parse(piece), scope)
+        except ParseError as exc:
+            self.error(text, where, exc.message, offset=start + exc.pos)
+        except BuildError as exc:
+            self.error(text, where, exc.message, exc.hint, offset=start + exc.pos)
+        return None
+
+    # -- the whole system --------------------------------------------------
+    def system(self) -> System:
+        self._check_names()
+        parameters = self._parameters()
+        functions = self._functions(parameters)
+        self.scopes = _Scopes.make(self.decl, parameters, functions)
+        coordinates = tuple(
+            Coordinate(s.name, self.where_of(s.node), s.description, s.unit, s.latex)
+            for s in self.decl.of_kind("coordinate")
+        )
+        inputs = tuple(Input(s.name, self.where_of(s.node), s.description, s.unit, s.latex) for s in self.decl.of_kind("input"))
+        quasi = tuple(self._quasi(s) for s in self.decl.of_kind("quasi"))
+        bodies = tuple(b for b in (self._body(b) for b in self.decl.bodies) if b)
+        forces, torques = self._loads(bodies)
+        work = self._form(self.decl.work, "work", self.scopes.work) if self.decl.work else None
+        if work is not None and work.dt != 0:
+            self.error(self.decl.work, "work", "virtual work has no dt term (δt = 0 in a virtual displacement)")
+        potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
+        constraints = tuple(c for c in (self._constraint(i, c) for i, c in enumerate(self.decl.constraints)) if c)
+        independent = self._independent()
+        return System(
+            name=self.decl.name, path=self.source.path, sha256=self.source.sha256,
+            location=Location(self.source.path, 1, 1),
+            title=self.decl.title, description=self.decl.description, reference=self.decl.reference,
+            parameters=parameters, functions=functions, inputs=inputs,
+            coordinates=coordinates, quasi_coordinates=quasi, constraints=constraints,
+            independent=independent,
+            independent_location=self.where_of(self.decl.independent_node) if self.decl.independent_node else Location(self.source.path, 1, 1),
+            bodies=bodies, forces=forces, torques=torques, work=work,
+            potential=potential if potential is not None else sp.S.Zero,
+        )
+
+    def _check_names(self) -> None:
+        seen: dict[str, SymbolDecl] = {}
+        if len(self.decl.symbols) > MAX_SYMBOLS:
+            self.error(self.decl.symbols[MAX_SYMBOLS].node, "", f"too many declared names (the limit is {MAX_SYMBOLS})")
+        rated = {s.name for s in self.decl.symbols if s.kind in ("coordinate", "quasi")}
+        for sym in self.decl.symbols:
+            where = f"{_section(sym.kind)}.{sym.name}"
+            if sym.name in seen:
+                first = seen[sym.name]
+                self.error(sym.node, where, f"'{sym.name}' is already declared as {_KIND_WORDS[first.kind]} (line {first.node.line})")
+                continue
+            seen[sym.name] = sym
+            if sym.name in RESERVED:
+                self.error(sym.node, where, f"'{sym.name}' is reserved for {RESERVED[sym.name]}")
+            elif sym.name in FUNCTIONS:
+                self.error(sym.node, where, f"'{sym.name}' is the name of a function and cannot be declared")
+            elif sym.name.startswith("d") and sym.name[1:] in rated:
+                self.error(sym.node, where, f"'{sym.name}' would be the differential of '{sym.name[1:]}'",
+                           "rename it; 'd' + a coordinate name is its differential")
+
+    def _parameters(self) -> tuple[Parameter, ...]:
+        out: list[Parameter] = []
+        for sym in self.decl.of_kind("parameter"):
+            scope = Scope(values={p.name: S.value(p.name) for p in out}, declared=self._all_names(),
+                          refusals=self._later(sym, "a parameter's value may name only earlier parameters"))
+            value = self.expression(sym.value, f"parameters.{sym.name}.value", scope)
+            out.append(Parameter(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))
+        return tuple(out)
+
+    def _functions(self, parameters: tuple[Parameter, ...]) -> tuple[Function, ...]:
+        values = {p.name: S.value(p.name) for p in parameters}
+        values["t"] = S.T
+        scope = Scope(values=values, declared=self._all_names(),
+                      refusals={n: "a function's value depends on t and parameters only" for n in self._all_names()})
+        out = []
+        for sym in self.decl.of_kind("function"):
+            value = self.expression(sym.value, f"functions.{sym.name}.value", scope)
+            out.append(Function(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))
+        return tuple(out)
+
+    def _all_names(self) -> frozenset[str]:
+        return frozenset(s.name for s in self.decl.symbols)
+
+    def _later(self, sym: SymbolDecl, why: str) -> dict[str, str]:
+        return {s.name: why for s in self.decl.symbols if s is not sym}
+
+    # -- differential forms ------------------------------------------------
+    def _form(self, text: Scalar, where: str, scope: Scope, start: int = 0, stop: int | None = None) -> Form | None:
+        expr = self.expression(text, where, scope, start, stop)
+        if expr is None:
+            return None
+        return self._as_form(expr, text, where, start)
+
+    def _as_form(self, expr: sp.Expr, text: Scalar, where: str, start: int = 0) -> Form | None:
+        names = self.scopes.rate_names
+        diffs = [S.differential(n) for n in names] + [S.DT]
+        problem = _linearity_problem(expr, diffs)
+        if problem:
+            self.error(text, where, problem, offset=start)
+            return None
+        coefficients = tuple((n, expr.coeff(S.differential(n))) for n in names if S.differential(n) in expr.free_symbols)
+        coefficients = tuple((n, sp.diff(expr, S.differential(n))) for n, _ in coefficients)
+        return Form(tuple((n, c) for n, c in coefficients if c != 0), sp.diff(expr, S.DT))
+
+    def _quasi(self, sym: SymbolDecl) -> QuasiCoordinate:
+        form = None
+        if sym.differential is not None:
+            form = self._form(sym.differential, f"quasi_coordinates.{sym.name}", self.scopes.form)
+            if form is not None and not form.coefficients and form.dt == 0:
+                self.error(sym.differential, f"quasi_coordinates.{sym.name}", "the differential is zero")
+        return QuasiCoordinate(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, form)
+
+    def _constraint(self, index: int, text: Scalar) -> Constraint | None:
+        where = f"constraints[{index}]"
+        sides = _split_equation(text.text)
+        if isinstance(sides, int):
+            self.error(text, where, "a constraint has at most one '=' (write lhs = rhs)", offset=sides)
+            return None
+        parts = [self.expression(text, where, self.scopes.form, a, b) for a, b in sides]
+        if any(p is None for p in parts):
+            return None
+        expr = parts[0] - parts[1] if len(parts) == 2 else parts[0]
+        diffs = {S.differential(n) for n in self.scopes.rate_names} | {S.DT}
+        if expr.free_symbols & diffs:
+            form = self._as_form(expr, text, where)
+            return Constraint(form, self.where_of(text), text.text) if form else None
+        return self._finite_constraint(expr, text, where)
+
+    def _finite_constraint(self, expr: sp.Expr, text: Scalar, where: str) -> Constraint | None:
+        """f(q, t) = 0 is used through df = 0."""
+        if expr == 0:
+            self.error(text, where, "the constraint is identically satisfied")
+            return None
+        coordinates = [s.name for s in self.decl.of_kind("coordinate")]
+        gradient = tuple((n, sp.diff(expr, S.value(n))) for n in coordinates)
+        dt = S.time_derivative(expr, self.scopes.function_chain)
+        return Constraint(Form(tuple((n, c) for n, c in gradient if c != 0), dt), self.where_of(text), text.text, expr)
+
+    # -- bodies and loads --------------------------------------------------
+    def _vector(self, items: tuple[Scalar, ...], where: str, scope: Scope):
+        values = [self.expression(item, f"{where}[{i}]", scope) for i, item in enumerate(items)]
+        if any(v is None for v in values):
+            return None
+        return tuple(values) + (sp.S.Zero,) * (3 - len(values))
+
+    def _body(self, decl: BodyDecl) -> Body | None:
+        where = f"bodies.{decl.name}"
+        mass = self.expression(decl.mass, f"{where}.mass", self.scopes.constant)
+        position = self._vector(decl.position, f"{where}.position", self.scopes.config)
+        inertia = rotation = None
+        if decl.is_rigid:
+            inertia = self._inertia(decl, where)
+            rotation = self._rotation(decl, where)
+            if inertia is None or rotation is None:
+                return None
+        if mass is None or position is None:
+            return None
+        return Body(decl.name, self.where_of(decl.node), mass, position, inertia, rotation, decl.description)
+
+    def _inertia(self, decl: BodyDecl, where: str) -> sp.ImmutableMatrix | None:
+        values = [self.expression(item, f"{where}.inertia", self.scopes.constant) for item in decl.inertia]
+        if not values or any(v is None for v in values):
+            return None
+        if len(values) == 1:
+            return sp.ImmutableMatrix(sp.diag(0, 0, values[0]))
+        if len(values) == 3:
+            return sp.ImmutableMatrix(sp.diag(*values))
+        matrix = sp.ImmutableMatrix(3, 3, values)
+        if any(sp.expand(matrix[i, j] - matrix[j, i]) != 0 for i in range(3) for j in range(i)):
+            self.error(decl.inertia_node, f"{where}.inertia", "the inertia matrix is not symmetric")
+            return None
+        return matrix
+
+    def _rotation(self, decl: BodyDecl, where: str) -> tuple[Form, Form, Form] | None:
+        forms = [self._form(item, f"{where}.rotation[{i}]", self.scopes.form) for i, item in enumerate(decl.rotation)]
+        if not forms or any(f is None for f in forms):
+            return None
+        if len(forms) == 1:
+            return (Form(()), Form(()), forms[0])
+        return tuple(forms)
+
+    def _loads(self, bodies: tuple[Body, ...]) -> tuple[tuple[Force, ...], tuple[Torque, ...]]:
+        by_name = {b.name: b for b in bodies}
+        forces, torques = [], []
+        for load in self.decl.loads:
+            if load.force:
+                force = self._force(load, by_name)
+                forces += [force] if force else []
+            else:
+                torque = self._torque(load, by_name)
+                torques += [torque] if torque else []
+        return tuple(forces), tuple(torques)
+
+    def _force(self, load: LoadDecl, bodies: dict[str, Body]) -> Force | None:
+        where = f"loads[{load.index}]"
+        vector = self._vector(load.force, f"{where}.force", self.scopes.load)
+        if load.at_body is not None:
+            body = self._body_named(load.at_body, f"{where}.at", bodies)
+            point = body.position if body else None
+        else:
+            point = self._vector(load.at_point, f"{where}.at", self.scopes.config)
+        if vector is None or point is None:
+            return None
+        return Force(vector, point, self.where_of(load.node))
+
+    def _torque(self, load: LoadDecl, bodies: dict[str, Body]) -> Torque | None:
+        where = f"loads[{load.index}]"
+        body = self._body_named(load.body, f"{where}.body", bodies)
+        values = [self.expression(item, f"{where}.torque", self.scopes.load) for item in load.torque]
+        if body is None or any(v is None for v in values):
+            return None
+        if not body.is_rigid:
+            self.error(load.body, f"{where}.body", f"'{body.name}' is a particle; a torque acts on a rigid body")
+            return None
+        vector = (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
+        return Torque(vector, body.name, self.where_of(load.node))
+
+    def _body_named(self, node: Scalar, where: str, bodies: dict[str, Body]) -> Body | None:
+        if node.text in bodies:
+            return bodies[node.text]
+        declared = {b.name for b in self.decl.bodies}
+        if node.text not in declared:
+            from gacli.schema import did_you_mean
+
+            self.error(node, where, f"'{node.text}' is not a body", did_you_mean(node.text, declared))
+        return None
+
+    def _independent(self) -> tuple[str, ...] | None:
+        if self.decl.independent is None:
+            return None
+        rated = {s.name: s for s in self.decl.symbols if s.kind in ("coordinate", "quasi")}
+        names: list[str] = []
+        for i, node in enumerate(self.decl.independent):
+            where = f"independent[{i}]"
+            if node.text in names:
+                self.error(node, where, f"'{node.text}' is listed twice")
+            elif node.text not in rated:
+                from gacli.schema import did_you_mean
+
+                self.error(node, where, f"'{node.text}' is not a coordinate or quasi-coordinate",
+                           did_you_mean(node.text, rated))
+            else:
+                names.append(node.text)
+        return tuple(names)
+
+
+def _section(kind: str) -> str:
+    return {"quasi": "quasi_coordinates"}.get(kind, kind + "s")
+
+
+def _split_equation(text: str) -> list[tuple[int, int | None]] | int:
+    """Spans of the sides of 'lhs = rhs', or the offset of a second '='."""
+    first = text.find("=")
+    if first < 0:
+        return [(0, None)]
+    second = text.find("=", first + 1)
+    if second >= 0:
+        return second
+    return [(0, first), (first + 1, None)]
+
+
+def _linearity_problem(expr: sp.Expr, diffs: list[sp.Symbol]) -> str:
+    """Why ``expr`` is not a linear form in ``diffs`` ('' when it is)."""
+    present = set(diffs) & expr.free_symbols
+    if not present:
+        return "expected a differential form (a combination of differentials such as dx and dt), found no differential"
+    for d in sorted(present, key=sp.default_sort_key):
+        if sp.diff(expr, d).free_symbols & present:
+            return f"the form is not linear in the differentials: {_offending_term(expr, present)}"
+    rest = expr.subs({d: 0 for d in present})
+    if sp.simplify(rest) != 0:
+        return f"every term of a differential form needs a differential; '{_plain(rest)}' has none"
+    return ""
+
+
+def _offending_term(expr: sp.Expr, present: set) -> str:
+    for term in sp.Add.make_args(sp.expand(expr)):
+        degree = sum(sp.degree(term, d) for d in present if d in term.free_symbols) if term.is_polynomial(*present) else 2
+        if degree > 1:
+            return f"term '{_plain(term)}' is not linear"
+    return "a differential appears inside a function"
+
+
+def _plain(expr: sp.Expr) -> str:
+    """An expression written in the file's grammar (differentials as dx)."""
+    text = sp.sstr(expr)
+    return text.replace("d[", "d").replace("]", "")
+
+
+@dataclass(frozen=True)
+class _Scopes:
+    """The scopes of each kind of place in a system file."""
+
+    constant: Scope
+    config: Scope
+    form: Scope
+    load: Scope
+    work: Scope
+    rate_names: tuple[str, ...]
+    function_chain: dict
+
+    @staticmethod
+    def make(decl: SystemDecl, parameters, functions) -> "_Scopes":
+        declared = frozenset(s.name for s in decl.symbols)
+        kinds = {s.name: s.kind for s in decl.symbols}
+        coordinates = [s.name for s in decl.of_kind("coordinate")]
+        rated = coordinates + [s.name for s in decl.of_kind("quasi")]
+        params = {p.name: S.value(p.name) for p in parameters}
+        fvalues, frates = _function_values(functions)
+        config_values = {**params, **fvalues, **{c: S.value(c) for c in coordinates}, "t": S.T}
+        refusals = _refusals(kinds, "config")
+        config = Scope(config_values, frates, {}, refusals, declared, _CONFIG_NOTE)
+        constant = Scope(params, {}, {}, _refusals(kinds, "constant"), declared)
+        diffs = {f"d{n}": S.differential(n) for n in rated}
+        diffs["dt"] = S.DT
+        form = Scope(config_values, frates, diffs, refusals, declared, _CONFIG_NOTE)
+        load_rates = {**frates, **{(n, 1): S.rate(n) for n in rated}}
+        load_values = {**config_values, **{s.name: S.value(s.name) for s in decl.of_kind("input")}}
+        load = Scope(load_values, load_rates, {}, _refusals(kinds, "load"), declared, _LOAD_NOTE)
+        work = Scope(load_values, load_rates, diffs, _refusals(kinds, "load"), declared, _LOAD_NOTE)
+        chain = {S.rate(f.name, o): S.rate(f.name, o + 1) for f in functions if f.value is None for o in range(4)}
+        return _Scopes(constant, config, form, load, work, tuple(rated), chain)
+
+
+def _function_values(functions) -> tuple[dict, dict]:
+    """Names and rates of functions: a value substitutes, a free function stays a symbol."""
+    values, rates = {}, {}
+    for f in functions:
+        if f.value is None:
+            values[f.name] = S.value(f.name)
+            rates.update({(f.name, o): S.rate(f.name, o) for o in (1, 2)})
+        else:
+            values[f.name] = f.value
+            rates.update({(f.name, o): sp.diff(f.value, S.T, o) for o in (1, 2)})
+    return values, rates
+
+
+_CONFIG_NOTE = "this depends on the configuration only (coordinates, parameters, functions and t), not on rates"
+_LOAD_NOTE = "loads may depend on first rates dot(x), not on accelerations"
+
+_WHY = {
+    ("quasi", "config"): "'{n}' is a quasi-coordinate: it has a rate dot({n}) and a differential d{n}, but no value",
+    ("quasi", "load"): "'{n}' is a quasi-coordinate: it has a rate dot({n}) and a differential d{n}, but no value",
+    ("quasi", "constant"): "'{n}' is a quasi-coordinate; only parameters may appear here",
+    ("input", "config"): "'{n}' is an input; inputs may appear only in loads and work",
+    ("input", "constant"): "'{n}' is an input; only parameters may appear here",
+    ("coordinate", "constant"): "'{n}' is a coordinate; only parameters may appear here (masses and inertias are constant)",
+    ("function", "constant"): "'{n}' is a function of time; only parameters may appear here",
+}
+
+
+def _refusals(kinds: dict[str, str], place: str) -> dict[str, str]:
+    out = {}
+    for name, kind in kinds.items():
+        why = _WHY.get((kind, place))
+        if why:
+            out[name] = why.format(n=name)
+    return out

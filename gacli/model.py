@@ -1,0 +1,158 @@
+"""The validated system: frozen records holding SymPy expressions.
+
+Everything here has been parsed and checked by :mod:`gacli.loading`; the
+derivation stages read these records and never the YAML. Differential forms
+(eq. 14.1, 14.2, rigid-body rotations, virtual work) are stored as their
+coefficients on the differentials of the coordinates and quasi-coordinates,
+plus the coefficient of dt.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.errors import Location
+
+
+@dataclass(frozen=True)
+class Form:
+    """Σ_s c_s dq_s + c_t dt, with the coefficients keyed by coordinate name."""
+
+    coefficients: tuple[tuple[str, sp.Expr], ...]
+    dt: sp.Expr = sp.S.Zero
+
+    def coefficient(self, name: str) -> sp.Expr:
+        return dict(self.coefficients).get(name, sp.S.Zero)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(name for name, _ in self.coefficients)
+
+
+@dataclass(frozen=True)
+class Declared:
+    """Common fields of every declared name."""
+
+    name: str
+    location: Location
+    description: str = ""
+    unit: str = ""
+    latex: str = ""
+
+
+@dataclass(frozen=True)
+class Parameter(Declared):
+    value: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class Function(Declared):
+    """A prescribed function of time; free (an argument of generated code) when value is None."""
+
+    value: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class Input(Declared):
+    pass
+
+
+@dataclass(frozen=True)
+class Coordinate(Declared):
+    pass
+
+
+@dataclass(frozen=True)
+class QuasiCoordinate(Declared):
+    """θ with dθ = Σ C_s dq_s + C dt (eq. 14.2), or primitive when differential is None."""
+
+    differential: Form | None = None
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """Σ B_s dq_s + B dt = 0 (eq. 14.1); ``relation`` is f when given as f(q, t) = 0."""
+
+    form: Form
+    location: Location
+    text: str
+    relation: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
+class Body:
+    """A particle (no inertia) or a rigid body with body-axis inertia and rotation forms."""
+
+    name: str
+    location: Location
+    mass: sp.Expr
+    position: tuple[sp.Expr, sp.Expr, sp.Expr]
+    inertia: sp.ImmutableMatrix | None = None
+    rotation: tuple[Form, Form, Form] | None = None
+    description: str = ""
+
+    @property
+    def is_rigid(self) -> bool:
+        return self.inertia is not None
+
+
+@dataclass(frozen=True)
+class Force:
+    """A force (inertial components) applied at a point given by its position."""
+
+    vector: tuple[sp.Expr, sp.Expr, sp.Expr]
+    point: tuple[sp.Expr, sp.Expr, sp.Expr]
+    location: Location
+
+
+@dataclass(frozen=True)
+class Torque:
+    """A torque on a rigid body, in the body axes of its ``rotation``."""
+
+    vector: tuple[sp.Expr, sp.Expr, sp.Expr]
+    body: str
+    location: Location
+
+
+@dataclass(frozen=True)
+class System:
+    """A mechanical system as the chapter states it, ready for derivation."""
+
+    name: str
+    path: str
+    sha256: str
+    location: Location
+    title: str
+    description: str
+    reference: str
+    parameters: tuple[Parameter, ...]
+    functions: tuple[Function, ...]
+    inputs: tuple[Input, ...]
+    coordinates: tuple[Coordinate, ...]
+    quasi_coordinates: tuple[QuasiCoordinate, ...]
+    constraints: tuple[Constraint, ...]
+    independent: tuple[str, ...] | None
+    independent_location: Location
+    bodies: tuple[Body, ...]
+    forces: tuple[Force, ...]
+    torques: tuple[Torque, ...]
+    work: Form | None
+    potential: sp.Expr
+
+    @property
+    def rate_names(self) -> tuple[str, ...]:
+        """Coordinates then quasi-coordinates: the n + p names whose rates appear (eq. 14.3)."""
+        return tuple(c.name for c in self.coordinates) + tuple(q.name for q in self.quasi_coordinates)
+
+    @property
+    def free_functions(self) -> tuple[Function, ...]:
+        return tuple(f for f in self.functions if f.value is None)
+
+    def declared(self, name: str) -> Declared | None:
+        for group in (self.parameters, self.functions, self.inputs, self.coordinates, self.quasi_coordinates):
+            for item in group:
+                if item.name == name:
+                    return item
+        return None

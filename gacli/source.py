@@ -1,0 +1,204 @@
+"""Read a system file into YAML nodes that remember where they came from.
+
+The YAML is *composed*, never *constructed*: PyYAML's composer with the safe
+loader builds a node graph and no Python object is made from a tag, so a
+``!!python/object`` tag is just an unknown tag that we report. Scalars keep
+their source text, so ``0.1`` stays the exact decimal the user wrote and a key
+``on`` stays the string ``on`` (YAML 1.1 would make it ``True``).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Union
+
+import yaml
+
+from gacli.errors import Diagnostic, Location, SystemFileError
+
+MAX_FILE_BYTES = 1_000_000
+MAX_DEPTH = 32
+MAX_NODES = 100_000
+
+# Tags of plain data; any other tag (``!!python/...``, ``!custom``) is refused.
+_SCALAR_TAGS = {
+    "tag:yaml.org,2002:str": "str",
+    "tag:yaml.org,2002:int": "int",
+    "tag:yaml.org,2002:float": "float",
+    "tag:yaml.org,2002:bool": "bool",
+    "tag:yaml.org,2002:null": "null",
+}
+_MAP_TAG = "tag:yaml.org,2002:map"
+_SEQ_TAG = "tag:yaml.org,2002:seq"
+
+
+@dataclass(frozen=True)
+class Scalar:
+    """A YAML scalar: its text as written, its resolved kind and its place.
+
+    ``offset_base`` is the column (0-based) of the text's first character when
+    the scalar sits on one line, so that a column inside an expression can be
+    mapped back to the file; ``None`` when it cannot (block or folded text).
+    """
+
+    text: str
+    kind: str
+    line: int
+    column: int
+    offset_base: int | None
+
+    def column_of(self, offset: int) -> tuple[int, int]:
+        """(line, column), 1-based, of character ``offset`` of the text."""
+        if self.offset_base is None:
+            return self.line, self.column
+        return self.line, self.offset_base + offset + 1
+
+
+@dataclass(frozen=True)
+class Mapping:
+    items: tuple[tuple[Scalar, "Node"], ...]
+    line: int
+    column: int
+
+
+@dataclass(frozen=True)
+class Sequence:
+    items: tuple["Node", ...]
+    line: int
+    column: int
+
+
+Node = Union[Scalar, Mapping, Sequence]
+
+
+@dataclass(frozen=True)
+class SourceFile:
+    """The text of a system file, its SHA-256 and its root node."""
+
+    path: str
+    text: str
+    sha256: str
+    root: Node
+
+    def location(self, node: Node, offset: int | None = None) -> Location:
+        if isinstance(node, Scalar) and offset is not None:
+            line, col = node.column_of(offset)
+            return Location(self.path, line, col)
+        return Location(self.path, node.line, node.column)
+
+
+def _fail(path: str, message: str, line: int = 0, column: int = 0) -> SystemFileError:
+    return SystemFileError([Diagnostic(Location(path, line, column), message)])
+
+
+def read_source(path: str | Path) -> SourceFile:
+    """Read and compose a system file; every failure is a located SystemFileError."""
+    name = str(path)
+    try:
+        size = Path(path).stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise _fail(name, f"file is too large ({size} bytes; the limit is {MAX_FILE_BYTES})")
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise _fail(name, f"cannot read the file: {exc.strerror or exc}") from None
+    return parse_source(data, name)
+
+
+def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
+    """Compose YAML from bytes (UTF-8) into located nodes."""
+    if len(data) > MAX_FILE_BYTES:
+        raise _fail(path, f"file is too large ({len(data)} bytes; the limit is {MAX_FILE_BYTES})")
+    text = _decode(data, path)
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)
+        problem = exc.problem or exc.context or "invalid YAML"
+        raise _fail(path, f"invalid YAML: {problem}", line, col) from None
+    except yaml.YAMLError as exc:  # e.g. a reader error on control characters
+        raise _fail(path, f"invalid YAML: {exc}".splitlines()[0]) from None
+    except RecursionError:
+        raise _fail(path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)") from None
+    if root is None:
+        raise _fail(path, "the file is empty; a system file is a YAML mapping", 1, 1)
+    digest = hashlib.sha256(data).hexdigest()
+    return SourceFile(path, text, digest, _Converter(path).convert(root, 0))
+
+
+def _decode(data: bytes, path: str) -> str:
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = data[3:]
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        raise _fail(path, f"the file is not UTF-8 text (byte 0x{data[exc.start]:02x} at offset {exc.start})", line, 1) from None
+    if "\x00" in text:
+        line = text[: text.index("\x00")].count("\n") + 1
+        raise _fail(path, "the file contains a NUL byte; it is not a text file", line, 1)
+    return text
+
+
+class _Converter:
+    """Walks the composed node graph once, bounding depth and total size.
+
+    Aliases make the graph a DAG whose tree expansion can be exponential
+    ("billion laughs"), so the walk counts every node it visits.
+    """
+
+    def __init__(self, path: str) -> None:
+        self.path = path
+        self.count = 0
+
+    def convert(self, node: yaml.Node, depth: int) -> Node:
+        self.count += 1
+        line, col = node.start_mark.line + 1, node.start_mark.column + 1
+        if self.count > MAX_NODES:
+            raise _fail(self.path, f"the YAML expands to more than {MAX_NODES} nodes (aliases?)", line, col)
+        if depth > MAX_DEPTH:
+            raise _fail(self.path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)", line, col)
+        if isinstance(node, yaml.ScalarNode):
+            return self._scalar(node)
+        if isinstance(node, yaml.SequenceNode) and node.tag == _SEQ_TAG:
+            return Sequence(tuple(self.convert(n, depth + 1) for n in node.value), line, col)
+        if isinstance(node, yaml.MappingNode) and node.tag == _MAP_TAG:
+            return self._mapping(node, depth, line, col)
+        raise _fail(self.path, f"YAML tag '{node.tag}' is not allowed in a system file", line, col)
+
+    def _scalar(self, node: yaml.ScalarNode) -> Scalar:
+        line, col = node.start_mark.line + 1, node.start_mark.column + 1
+        kind = _SCALAR_TAGS.get(node.tag)
+        if kind is None:
+            raise _fail(self.path, f"YAML tag '{node.tag}' is not allowed in a system file", line, col)
+        return Scalar(node.value, kind, line, col, _offset_base(node))
+
+    def _mapping(self, node: yaml.MappingNode, depth: int, line: int, col: int) -> Mapping:
+        items = []
+        seen: dict[str, Scalar] = {}
+        for key_node, value_node in node.value:
+            key = self.convert(key_node, depth + 1)
+            if not isinstance(key, Scalar):
+                raise _fail(self.path, "a mapping key must be a plain name", key.line, key.column)
+            if key.text in seen:
+                first = seen[key.text]
+                raise _fail(self.path, f"duplicate key '{key.text}' (first at line {first.line})", key.line, key.column)
+            seen[key.text] = key
+            items.append((key, self.convert(value_node, depth + 1)))
+        return Mapping(tuple(items), line, col)
+
+
+def _offset_base(node: yaml.ScalarNode) -> int | None:
+    """Column (0-based) of the first character of a one-line scalar's text."""
+    start, end = node.start_mark, node.end_mark
+    if start.line != end.line:
+        return None
+    if node.style in ("'", '"'):
+        # Escapes would shift offsets; only trust quoted text without them.
+        raw = start.buffer[start.pointer + 1 : end.pointer - 1] if start.buffer else None
+        return start.column + 1 if raw == node.value else None
+    if node.style is None:
+        return start.column
+    return None

@@ -1,0 +1,67 @@
+"""The plain SymPy symbols that stand for time, coordinates and their rates.
+
+gacli never uses SymPy functions of time: a coordinate ``x`` is the symbol
+``x``, its rate the symbol ``dot(x)``, its acceleration ``ddot(x)``, and the
+time derivative is our own operator :func:`time_derivative`, which follows the
+chain q → dot(q) → ddot(q) and Omega → dot(Omega) → ... The symbol names are
+written in the system file's own grammar, so a printed equation can be read
+back as an expression.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+
+import sympy as sp
+
+T = sp.Symbol("t", real=True)
+
+_ORDER_PREFIX = {0: "", 1: "dot", 2: "ddot"}
+
+
+def rate_name(name: str, order: int) -> str:
+    """``x``, ``dot(x)``, ``ddot(x)``, then ``d3(x)``, ``d4(x)`` ..."""
+    if order == 0:
+        return name
+    prefix = _ORDER_PREFIX.get(order, f"d{order}")
+    return f"{prefix}({name})"
+
+
+def value(name: str) -> sp.Symbol:
+    return sp.Symbol(name, real=True)
+
+
+def rate(name: str, order: int = 1) -> sp.Symbol:
+    return sp.Symbol(rate_name(name, order), real=True)
+
+
+def differential(name: str) -> sp.Symbol:
+    # Brackets keep it apart from any user symbol: 'dx' may not be declared
+    # beside 'x', but a user may still declare a name like 'd'.
+    return sp.Symbol(f"d[{name}]", real=True)
+
+
+DT = differential("t")
+
+
+def derivative_chain(names: Iterable[str], orders: int = 2) -> dict[sp.Symbol, sp.Symbol]:
+    """Map each symbol of order j to its time derivative of order j + 1."""
+    chain: dict[sp.Symbol, sp.Symbol] = {}
+    for name in names:
+        for order in range(orders):
+            chain[rate(name, order)] = rate(name, order + 1)
+    return chain
+
+
+def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Expr:
+    """Total time derivative: ∂e/∂t + Σ ∂e/∂s · ṡ over the symbols in ``chain``.
+
+    ``chain`` maps a symbol to its rate expressed however the caller needs
+    (for a dependent coordinate, its rate in terms of the independent rates,
+    eq. (14.7)). Symbols absent from ``chain`` are constant.
+    """
+    free = expr.free_symbols
+    total = sp.diff(expr, T) if T in free else sp.S.Zero
+    for sym in sorted(free & chain.keys(), key=sp.default_sort_key):
+        total += sp.diff(expr, sym) * chain[sym]
+    return total
