@@ -16,6 +16,7 @@ so G is never expanded to find the equations.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import sympy as sp
@@ -97,7 +98,7 @@ class Derivation:
         return sp.ImmutableMatrix(qdot.col_join(sp.Matrix(self.forcing)))
 
 
-def derive(system: System) -> Derivation:
+def derive(system: System, *, progress: Callable[[str], None] | None = None) -> Derivation:
     """Derive the Gibbs-Appell equations of a loaded system (section 14.3).
 
     >>> import gacli
@@ -112,16 +113,22 @@ def derive(system: System) -> Derivation:
     >>> d.mass_matrix, d.forcing
     (Matrix([[m]]), Matrix([[-g*m]]))
     """
+    step = progress or (lambda name: None)
+    step("rates in terms of the independent rates (14.7)")
     rates = solve_rates(system)
+    step("velocities and accelerations (14.14)")
     motions = body_motions(system, rates)
+    step("generalized forces (14.13)")
     Q = generalized_forces(system, rates, motions)
+    step("Gibbs-Appell equations (14.19)")
     M, inertial = _mass_and_inertial_terms(motions, rates)
     kinematic = tuple((c.name, rates.rate(c.name)) for c in system.coordinates)
+    step("Gibbs function (14.17, 14.21)")
+    G = gibbs_function(system, rates, motions)
     return Derivation(
         system=system, rates=rates, motions=motions,
         mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(Q - inertial),
-        generalized_forces=Q, gibbs=gibbs_function(system, rates, motions),
-        kinematic_equations=kinematic,
+        generalized_forces=Q, gibbs=G, kinematic_equations=kinematic,
     )
 
 

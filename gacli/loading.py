@@ -54,7 +54,7 @@ def load_source(source: SourceFile) -> System:
     builder = _Builder(decl)
     system = builder.system()
     if builder.diagnostics:
-        raise SystemFileError(builder.diagnostics)
+        raise SystemFileError(sorted(builder.diagnostics, key=lambda d: d.location))
     return system
 
 

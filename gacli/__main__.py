@@ -1,0 +1,3 @@
+from gacli.cli import main
+
+main()
