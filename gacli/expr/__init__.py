@@ -1,0 +1,1 @@
+"""Expressions of system files: a restricted grammar and its translation to SymPy."""
