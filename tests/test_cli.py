@@ -1,0 +1,111 @@
+"""The command line: exit codes, streams, help, and what it must never do."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import SYSTEMS
+from gacli import __version__
+from gacli.cli import FORMATS, app
+
+SPHERE = str(SYSTEMS / "sphere_on_turntable.yaml")
+
+
+def run(*args):
+    return CliRunner().invoke(app, list(args))
+
+
+def test_version():
+    result = run("--version")
+    assert result.exit_code == 0
+    assert result.output.strip() == f"gacli {__version__}"
+
+
+@pytest.mark.parametrize("command", ["derive", "gibbs"])
+def test_every_command_help_has_a_working_example(command):
+    result = run(command, "--help")
+    assert result.exit_code == 0
+    assert "Example: gacli " + command in result.output
+
+
+def test_derive_prints_the_chapter_steps():
+    result = run("derive", SPHERE)
+    assert result.exit_code == 0, result.output
+    for heading in ("Degrees of freedom", "eq. (14.7)", "Gibbs function", "eq. (14.13)", "eq. (14.19)", "eq. (14.20)"):
+        assert heading in result.output
+    assert "k = n + p - d - l = 2 + 3 - 0 - 2 = 3" in result.output
+    assert "Q_x = F_x + M_y/a" in result.output
+
+
+def test_gibbs_prints_g_alone():
+    result = run("gibbs", str(SYSTEMS / "cylinder_in_cylinder.yaml"))
+    assert result.exit_code == 0, result.output
+    assert "G = (3*M*c**2/4)*ddot(theta)**2" in result.output
+    assert "eq. (14.19)" not in result.output
+
+
+def test_invalid_file_exits_1_with_location_on_stderr(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("gacli: 1\nname: bad\ncoordinates: [x]\nbodies: {p: {mass: m, position: [x, 0]}}\n")
+    result = CliRunner().invoke(app, ["derive", str(bad)])
+    assert result.exit_code == 1
+    assert f"{bad}:4:20: error: bodies.p.mass: 'm' is not declared" in result.stderr
+    assert result.stdout == ""
+    assert "Traceback" not in result.output
+
+
+def test_missing_file_is_a_usage_error(tmp_path):
+    result = run("derive", str(tmp_path / "nope.yaml"))
+    assert result.exit_code == 2
+
+
+def test_unknown_format_is_a_usage_error():
+    result = run("derive", SPHERE, "--format", "fortran")
+    assert result.exit_code == 2
+
+
+def test_output_with_text_format_is_a_usage_error(tmp_path):
+    result = run("derive", SPHERE, "--output", str(tmp_path / "x.txt"))
+    assert result.exit_code == 2
+
+
+def test_existing_output_untouched_on_error(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("gacli: 1\nname: bad\n")
+    target = tmp_path / "out.py"
+    target.write_text("precious\n")
+    result = run("derive", str(bad), "--format", "python", "--output", str(target))
+    assert result.exit_code == 1
+    assert target.read_text() == "precious\n"
+
+
+def test_formats_match_the_emitter_registry():
+    from gacli.emit import EMITTERS
+
+    assert set(FORMATS) == {"text", *EMITTERS}
+
+
+def test_module_entry_point_and_lazy_imports():
+    """`python -m gacli --help` works and does not import SymPy."""
+    code = (
+        "import sys, runpy\n"
+        "sys.argv = ['gacli', '--help']\n"
+        "try:\n    runpy.run_module('gacli', run_name='__main__')\n"
+        "except SystemExit as e:\n    assert e.code in (0, None), e.code\n"
+        "print('SYMPY' if 'sympy' in sys.modules else 'LEAN')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert "Usage" in out
+    assert out.strip().endswith("LEAN")
+
+
+def test_public_api_is_sorted_and_complete():
+    import gacli
+
+    assert gacli.__all__ == sorted(gacli.__all__)
+    for name in gacli.__all__:
+        assert getattr(gacli, name) is not None
