@@ -88,6 +88,7 @@ def derive(
         typer.Option("--output", "-o", help="Write here instead of stdout (a directory for C: NAME.h and NAME.c)."),
     ] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
+    steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
 ) -> None:
     """Derive the Gibbs-Appell equations of a system and print them.
 
@@ -98,15 +99,18 @@ def derive(
     with _boundary():
         derivation = _derive(file)
         if format.value == "text":
-            from gacli.report import derivation_report
+            from gacli.report import derivation_report, steps_report
 
             if output is not None:
                 raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
-            console.sections(derivation.system.title or derivation.system.name, derivation_report(derivation))
+            report = steps_report if steps else derivation_report
+            console.sections(derivation.system.title or derivation.system.name, report(derivation))
             return
+        if steps and format.value != "latex":
+            raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
         from gacli.api import emit
 
-        options = {"standalone": standalone} if format.value == "latex" else {}
+        options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {}
         files = emit(derivation, format.value, **options)
         if output is None:
             for _, text in sorted(files.items()):

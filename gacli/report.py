@@ -13,29 +13,13 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.equations import Derivation
-from gacli.gibbs import gibbs_coefficients
+from gacli.readable import Tidy, show
 from gacli.symbols import rate_name
-
-# Above this many operations sympy.simplify can take minutes; show the
-# expression as derived instead.
-SIMPLIFY_BUDGET = 150
-
 
 @dataclass(frozen=True)
 class Section:
     title: str
     lines: tuple[str, ...]
-
-
-def tidy(expr: sp.Expr) -> sp.Expr:
-    """A shorter equal expression, within a size budget."""
-    if sp.count_ops(expr) <= SIMPLIFY_BUDGET:
-        return sp.simplify(expr)
-    return sp.cancel(expr)
-
-
-def show(expr: sp.Expr) -> str:
-    return sp.sstr(expr, order="lex")
 
 
 def freedom(d: Derivation) -> Section:
@@ -52,60 +36,61 @@ def freedom(d: Derivation) -> Section:
     ))
 
 
-def rates(d: Derivation) -> Section:
+def rates(d: Derivation, tidy: Tidy) -> Section:
     lines = [f"{rate_name(n, 1)} = {show(tidy(d.rates.rate(n)))}"
              for n in d.rates.names if n not in d.independent]
     return Section("Rates in terms of the independent rates, eq. (14.7)", tuple(lines) or ("(all rates are independent)",))
 
 
-def gibbs(d: Derivation) -> Section:
-    H, g = gibbs_coefficients(d.gibbs, d.rates)
-    acc = d.speed_rates
-    terms = []
-    for i in range(d.k):
-        for j in range(i, d.k):
-            c = tidy(H[i, j] / 2 if i == j else H[i, j])
-            if c != 0:
-                terms.append(f"({show(c)})*{acc[i]}" + ("**2" if i == j else f"*{acc[j]}"))
-    for i in range(d.k):
-        c = tidy(g[i])
-        if c != 0:
-            terms.append(f"({show(c)})*{acc[i]}")
-    body = " + ".join(terms) if terms else "0"
-    return Section("Gibbs function, acceleration terms (eqs. 14.17, 14.21)", (f"G = {body} + ...",))
+def gibbs(d: Derivation, tidy: Tidy) -> Section:
+    from gacli.steps import gibbs_polynomial
+
+    return Section("Gibbs function, acceleration terms (eqs. 14.17, 14.21)",
+                   (f"G = {show(gibbs_polynomial(d, tidy))} + ...",))
 
 
-def forces(d: Derivation) -> Section:
+def forces(d: Derivation, tidy: Tidy) -> Section:
     lines = [f"Q_{name} = {show(tidy(q))}" for name, q in zip(d.independent, d.generalized_forces)]
     return Section("Generalized forces, eq. (14.13)", tuple(lines))
 
 
-def equations(d: Derivation) -> Section:
+def equations(d: Derivation, tidy: Tidy) -> Section:
+    from gacli.steps import equation_of_motion
+
     lines = []
     for s, name in enumerate(d.independent):
-        lhs = sum((tidy(d.mass_matrix[s, r]) * a for r, a in enumerate(d.speed_rates)), sp.S.Zero)
-        rest = tidy(d.generalized_forces[s] - d.forcing[s])
-        lines.append(f"dG/d({rate_name(name, 2)}): {_join(show(lhs), rest)} = {show(tidy(d.generalized_forces[s]))}")
+        eq = equation_of_motion(d, s, tidy)
+        lines.append(f"dG/d({rate_name(name, 2)}): {show(eq.lhs)} = {show(eq.rhs)}")
     return Section("Gibbs-Appell equations, eq. (14.19)", tuple(lines))
 
 
-def _join(first: str, rest: sp.Expr) -> str:
-    """'first + rest' with the sign of rest folded in."""
-    if rest == 0:
-        return first
-    text = show(rest)
-    return f"{first} - {text[1:]}" if text.startswith("-") else f"{first} + {text}"
-
-
-def kinematic(d: Derivation) -> Section:
+def kinematic(d: Derivation, tidy: Tidy) -> Section:
     lines = [f"{rate_name(n, 1)} = {show(tidy(e))}" for n, e in d.kinematic_equations]
     return Section("Kinematic equations, eq. (14.20)", tuple(lines))
 
 
 def derivation_report(d: Derivation) -> tuple[Section, ...]:
-    """The chapter's solution procedure (section 14.3), step by step."""
-    return (freedom(d), rates(d), gibbs(d), forces(d), equations(d), kinematic(d))
+    """The results of the chapter's solution procedure (section 14.3)."""
+    return (freedom(d), rates(d, Tidy()), gibbs(d, Tidy()), forces(d, Tidy()), equations(d, Tidy()), kinematic(d, Tidy()))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
-    return (gibbs(d),)
+    return (gibbs(d, Tidy()),)
+
+
+def steps_report(d: Derivation) -> tuple[Section, ...]:
+    """The worked solution (:mod:`gacli.steps`) as text sections."""
+    from gacli.steps import Equation, worked_solution
+
+    def line(item) -> str:
+        if isinstance(item, Equation):
+            return f"{_side(item.lhs)} = {_side(item.rhs)}"
+        return item
+
+    return tuple(Section(step.title, tuple(line(i) for i in step.items)) for step in worked_solution(d))
+
+
+def _side(expr) -> str:
+    if isinstance(expr, sp.MatrixBase):
+        return "[" + ", ".join(show(e) for e in expr) + "]"
+    return show(expr)
