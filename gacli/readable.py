@@ -1,4 +1,4 @@
-"""Simplification for reading, within a time budget.
+"""Simplification for reading, within a budget of operations per step.
 
 Everything printed for people goes through :class:`Tidy`; generated code
 never does, so display choices cannot change what a simulator computes.
@@ -6,28 +6,31 @@ never does, so display choices cannot change what a simulator computes.
 
 from __future__ import annotations
 
-import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import sympy as sp
 
 # sympy.simplify grows quickly with size; above this many operations only
 # cheap rational cancellation is tried.
-SIMPLIFY_OPS = 400
-STEP_BUDGET_SECONDS = 5.0
+SIMPLIFY_OPS = 250
+# The budget of one step, counted in operations handed to simplify rather
+# than in seconds, so that the output is the same on a slow machine.
+STEP_BUDGET_OPS = 5_000
 
 
 @dataclass
 class Tidy:
-    """Simplify expressions until ``budget`` seconds have been spent, then show them as derived."""
+    """Simplify expressions until ``budget`` operations have been simplified, then show them as derived."""
 
-    budget: float = STEP_BUDGET_SECONDS
-    started: float = field(default_factory=time.monotonic)
+    budget: int = STEP_BUDGET_OPS
+    spent: int = 0
 
     def __call__(self, expr: sp.Expr) -> sp.Expr:
-        if time.monotonic() - self.started > self.budget:
+        ops = sp.count_ops(expr)
+        if self.spent + ops > self.budget:
             return expr
-        if sp.count_ops(expr) <= SIMPLIFY_OPS:
+        self.spent += ops
+        if ops <= SIMPLIFY_OPS:
             return sp.simplify(expr)
         return sp.cancel(expr)
 

@@ -2,8 +2,8 @@
 
 This is data (prose and equations as SymPy objects), rendered as text by
 :mod:`gacli.report` and as LaTeX by :mod:`gacli.emit.latex`. Expressions are
-simplified for reading within a time budget per step; a step that runs out
-of time shows the rest of its expressions as derived. Nothing here feeds the
+simplified for reading within a budget of operations per step (deterministic,
+unlike a clock); a step that has spent it shows the rest as derived. Nothing here feeds the
 code emitters.
 """
 
@@ -16,7 +16,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.equations import Derivation
 from gacli.gibbs import acceleration_chain, gibbs_coefficients
-from gacli.readable import STEP_BUDGET_SECONDS, Tidy
+from gacli.readable import STEP_BUDGET_OPS, Tidy
 
 
 
@@ -38,7 +38,7 @@ def variation(name: str) -> sp.Symbol:
     return sp.Symbol(f"δ{name}", real=True)
 
 
-def worked_solution(d: Derivation, budget: float = STEP_BUDGET_SECONDS) -> tuple[Step, ...]:
+def worked_solution(d: Derivation, budget: int = STEP_BUDGET_OPS) -> tuple[Step, ...]:
     """Section 14.3's procedure applied to ``d``'s system, step by step."""
     return (
         degrees_of_freedom(d),
