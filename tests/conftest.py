@@ -29,3 +29,15 @@ def rng():
     import numpy as np
 
     return np.random.default_rng(20261122)
+
+
+def require_tool(name: str) -> str:
+    """The path of an external tool; skip without it, except in CI where it must be there."""
+    import shutil
+
+    path = shutil.which(name)
+    if path is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{name} is required in CI (.ci/run installs it)")
+        pytest.skip(f"{name} is not installed")
+    return path

@@ -6,10 +6,13 @@ output is written in it) and compared symbolically with the chapter.
 
 from __future__ import annotations
 
+import subprocess
+
+import pytest
 import sympy as sp
 from typer.testing import CliRunner
 
-from conftest import SYSTEMS
+from conftest import SYSTEMS, require_tool
 from gacli.cli import app
 from gacli.expr.build import Scope, build
 from gacli.expr.grammar import Name, Rate, parse, walk
@@ -97,3 +100,16 @@ def test_top_steps_use_the_quasi_coordinate():
 def test_steps_need_text_or_latex():
     result = CliRunner().invoke(app, ["derive", str(SYSTEMS / "particle_in_plane.yaml"), "--steps", "--format", "c"])
     assert result.exit_code == 2
+
+
+@pytest.mark.parametrize("name", ["particle_in_plane", "cylinder_in_cylinder", "sphere_on_turntable", "spinning_top"])
+def test_latex_worked_solution_compiles(name, tmp_path):
+    pdflatex = require_tool("pdflatex")
+    out = tmp_path / f"{name}.tex"
+    result = CliRunner().invoke(app, ["derive", str(SYSTEMS / f"{name}.yaml"), "--steps", "--format", "latex",
+                                      "--standalone", "--output", str(out)])
+    assert result.exit_code == 0, result.output
+    run = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", out.name],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+    assert (tmp_path / f"{name}.pdf").exists()

@@ -1,0 +1,235 @@
+"""The LaTeX emitter: symbol rendering, document structure, golden file, pdflatex builds."""
+
+from __future__ import annotations
+
+import functools
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from gacli.emit.latex import GacliLatexPrinter, emit_latex, latex_names, split_rate
+from gacli.equations import derive
+from gacli.loading import load, loads
+
+ROOT = Path(__file__).resolve().parent.parent
+SYSTEM_FILES = sorted((ROOT / "systems").glob("*.yaml"))
+GOLDEN = ROOT / "tests" / "golden"
+PDFLATEX = shutil.which("pdflatex")
+
+
+@functools.lru_cache(maxsize=None)
+def derived(name: str):
+    return derive(load(ROOT / "systems" / f"{name}.yaml"))
+
+
+def text_of(derivation, **kwargs) -> str:
+    (text,) = emit_latex(derivation, **kwargs).values()
+    return text
+
+
+# -- symbols -------------------------------------------------------------------
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("theta", r"\theta"),
+        ("Omega", r"\Omega"),
+        ("q_x", r"q_{x}"),
+        ("I_x", r"I_{x}"),
+        ("dot(q_x)", r"\dot{q}_{x}"),
+        ("ddot(theta)", r"\ddot{\theta}"),
+        ("dot(Omega)", r"\dot{\Omega}"),
+        ("ddot(Omega)", r"\ddot{\Omega}"),
+        ("d3(x)", r"\dddot{x}"),
+        ("d4(q_1)", r"\ddddot{q}_{1}"),
+        ("d5(x)", r"{x}^{(5)}"),
+        ("x", "x"),
+        ("dot(x)", r"\dot{x}"),
+    ],
+)
+def test_symbol_rendering(name, expected):
+    assert GacliLatexPrinter().doprint(sp.Symbol(name, real=True)) == expected
+
+
+def test_latex_override_is_used_for_the_base_and_its_rates():
+    printer = GacliLatexPrinter({"I": r"\bar{I}", "phi": r"\varphi"})
+    assert printer.doprint(sp.Symbol("I")) == r"\bar{I}"
+    assert printer.doprint(sp.Symbol("dot(I)")) == r"\dot{\bar{I}}"
+    assert printer.doprint(sp.Symbol("ddot(phi)")) == r"\ddot{\varphi}"
+    assert printer.doprint(sp.Symbol("theta")) == r"\theta"
+
+
+def test_rates_inside_expressions_are_printed_by_the_override():
+    printer = GacliLatexPrinter({"I": r"\bar{I}"}, {"fold_func_brackets": True})
+    expr = sp.Symbol("I") * sp.Symbol("dot(q_x)") ** 2 * sp.sin(sp.Symbol("theta"))
+    assert printer.doprint(expr) == r"\bar{I} \dot{q}_{x}^{2} \sin {\theta}"
+
+
+def test_constants_and_functions_keep_sympy_rendering():
+    printer = GacliLatexPrinter(settings={"fold_func_brackets": True})
+    x, y = sp.symbols("x y", real=True)
+    assert printer.doprint(sp.pi * x / 2) == r"\frac{\pi x}{2}"
+    assert printer.doprint(sp.atan2(y, x)) == r"\operatorname{atan2}\left(y, x\right)"
+    assert printer.doprint(sp.cos(sp.Symbol("theta")) ** 2) == r"\cos^{2} {\theta}"
+
+
+def test_split_rate():
+    assert split_rate("x") == (0, "x")
+    assert split_rate("dot(q_x)") == (1, "q_x")
+    assert split_rate("ddot(Omega)") == (2, "Omega")
+    assert split_rate("d7(y)") == (7, "y")
+
+
+OVERRIDE_SYSTEM = """\
+gacli: 1
+name: pendulum_bar
+title: "Bar pendulum: 50% of a_b & {c} -- \u2014 \u03a9 \u00e9t\u00e9 ~ ^ # $ \\\\"
+source: Test <fixture>
+parameters:
+  m: mass
+  g: gravity
+  l: length
+  Ib: {description: moment about the centre, latex: "\\\\bar{I}"}
+coordinates:
+  th: {description: angle, latex: "\\\\vartheta"}
+bodies:
+  bar:
+    mass: m
+    position: [l*sin(th), -l*cos(th)]
+    inertia: Ib
+    rotation: dth
+potential: -m*g*l*cos(th)
+"""
+
+
+def test_latex_override_in_emitted_equations():
+    derivation = derive(loads(OVERRIDE_SYSTEM))
+    assert latex_names(derivation.system) == {"Ib": r"\bar{I}", "th": r"\vartheta"}
+    text = text_of(derivation)
+    assert r"\frac{\partial G}{\partial \ddot{\vartheta}} &= \left(\bar{I} + l^{2} m\right) \, \ddot{\vartheta}" in text
+    assert r"\dot{\vartheta} &= \dot{\vartheta}" in text
+
+
+# -- the document --------------------------------------------------------------
+
+def test_header_carries_version_file_and_hash_only():
+    import gacli
+
+    derivation = derived("cylinder_in_cylinder")
+    text = text_of(derivation)
+    header = [line for line in text.splitlines() if line.startswith("%")][:6]
+    assert gacli.__version__ in header[0]
+    assert header[1] == "% System file: cylinder_in_cylinder.yaml"
+    assert header[2] == f"% SHA-256: {derivation.system.sha256}"
+    assert header[3] == "% Title: Cylinder rolling without slipping inside a fixed cylinder"
+
+
+def test_blocks_in_order_each_in_align():
+    text = text_of(derived("cylinder_in_cylinder"))
+    assert text.count(r"\begin{align*}") == text.count(r"\end{align*}") == 4
+    assert r"\documentclass" not in text
+    order = [text.index(s) for s in ("G &=", "Q_{\\theta} &=", r"\frac{\partial G}", r"\dot{\phi} &=")]
+    assert order == sorted(order)
+
+
+def test_cylinder_equations_read_as_in_the_chapter():
+    text = text_of(derived("cylinder_in_cylinder"))
+    assert r"G &= \frac{3 M c^{2}}{4} \, \ddot{\theta}^{2} + \dots" in text
+    assert r"\frac{\partial G}{\partial \ddot{\theta}} &= \frac{3 M c^{2}}{2} \, \ddot{\theta} = - M c g \sin {\theta}" in text
+    assert r"\dot{\phi} &= \frac{c \dot{\theta}}{a}" in text
+
+
+def test_long_sums_are_broken_across_lines():
+    text = text_of(derived("rigid_body"))
+    gibbs = text[text.index("G &="):text.index(r"\end{align*}")]
+    assert "\\\\\n&\\quad + " in gibbs
+    assert gibbs.rstrip().endswith(r"+ \dots")
+
+
+def test_equations_follow_the_derivation_for_euler():
+    text = text_of(derived("rigid_body"))
+    assert r"\frac{\partial G}{\partial \ddot{q}_{1}} &= I_{x} \, \ddot{q}_{1}" in text
+    assert r"= M_{x}" in text
+
+
+def test_emit_leaves_the_derivation_unchanged():
+    derivation = derived("sphere_on_turntable")
+    before = (derivation.mass_matrix, derivation.forcing, derivation.gibbs, derivation.kinematic_equations)
+    text_of(derivation, standalone=True)
+    assert (derivation.mass_matrix, derivation.forcing, derivation.gibbs, derivation.kinematic_equations) == before
+
+
+def test_deterministic_within_a_process():
+    first = emit_latex(derive(load(ROOT / "systems" / "sphere_on_turntable.yaml")), standalone=True)
+    second = emit_latex(derive(load(ROOT / "systems" / "sphere_on_turntable.yaml")), standalone=True)
+    assert first == second
+
+
+def test_deterministic_across_hash_seeds():
+    code = (
+        "import sys; from gacli.loading import load; from gacli.equations import derive; "
+        "from gacli.emit.latex import emit_latex; "
+        "sys.stdout.write(''.join(emit_latex(derive(load(sys.argv[1])), standalone=True).values()))"
+    )
+    path = str(ROOT / "systems" / "sphere_on_turntable.yaml")
+    outputs = set()
+    for seed in ("1", "2"):
+        env = {**os.environ, "PYTHONHASHSEED": seed, "PYTHONPATH": str(ROOT)}
+        run = subprocess.run([sys.executable, "-c", code, path], env=env, capture_output=True, text=True, check=True)
+        outputs.add(run.stdout)
+    assert len(outputs) == 1
+
+
+def test_standalone_is_a_document_with_title_and_source():
+    text = text_of(derived("sphere_on_turntable"), standalone=True)
+    assert r"\documentclass{article}" in text
+    assert [line for line in text.splitlines() if line.startswith(r"\usepackage")] == [r"\usepackage{amsmath}"]
+    assert "Sphere rolling without slipping on a rotating plane" in text
+    assert "Source: Pars, A Treatise on Analytical Dynamics; eqs. (14.23)-(14.30)." in text
+    assert text.rstrip().endswith(r"\end{document}")
+
+
+def test_file_name_is_the_system_name():
+    assert list(emit_latex(derived("spinning_top"))) == ["spinning_top.tex"]
+
+
+# -- golden file ---------------------------------------------------------------
+
+def test_golden_cylinder_in_cylinder():
+    path = GOLDEN / "cylinder_in_cylinder.tex"
+    data = text_of(derived("cylinder_in_cylinder")).encode("utf-8")
+    if os.environ.get("GACLI_UPDATE_GOLDEN") == "1":
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(data)
+    assert path.read_bytes() == data, "LaTeX output changed; rerun with GACLI_UPDATE_GOLDEN=1 if intended"
+
+
+# -- pdflatex ------------------------------------------------------------------
+
+def _compile(text: str, name: str, tmp_path: Path) -> None:
+    (tmp_path / name).write_text(text, encoding="utf-8")
+    run = subprocess.run(
+        [PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", name],
+        cwd=tmp_path, capture_output=True, text=True, timeout=120,
+    )
+    assert run.returncode == 0, run.stdout[-3000:]
+    assert (tmp_path / name).with_suffix(".pdf").exists()
+
+
+@pytest.mark.skipif(PDFLATEX is None, reason="pdflatex not installed")
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_standalone_compiles(path, tmp_path):
+    ((name, text),) = emit_latex(derived(path.stem), standalone=True).items()
+    _compile(text, name, tmp_path)
+
+
+@pytest.mark.skipif(PDFLATEX is None, reason="pdflatex not installed")
+def test_standalone_compiles_with_special_characters_in_free_text(tmp_path):
+    ((name, text),) = emit_latex(derive(loads(OVERRIDE_SYSTEM)), standalone=True).items()
+    assert text.split(r"\begin{document}")[1].isascii()
+    _compile(text, name, tmp_path)
