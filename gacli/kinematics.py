@@ -36,6 +36,7 @@ class Rates:
     chosen_automatically: bool
     beta: sp.ImmutableMatrix
     beta0: sp.ImmutableMatrix
+    constraints_used: int = 0
 
     @property
     def k(self) -> int:
@@ -82,8 +83,20 @@ class BodyMotion:
 # -- step 1: solve the linear relations among the rates ----------------------
 
 def relation_rows(system: System) -> tuple[list[tuple[str, object, Form]], list[str]]:
-    """The rows A ṙ + a₀ = 0: constraints (14.1) then quasi definitions (14.2)."""
-    rows = [(f"constraints[{i}]", c.location, c.form) for i, c in enumerate(system.constraints)]
+    """The rows A ṙ + a₀ = 0: constraints (14.1) then quasi definitions (14.2).
+
+    A derived row (rolling contact) that depends on the rows before it is left
+    out: it says again what they say.
+    """
+    rows = []
+    kept = np.zeros((0, len(system.rate_names)))
+    for i, c in enumerate(system.constraints):
+        if c.derived:
+            numeric = _numeric(sp.Matrix([[c.form.coefficient(n) for n in system.rate_names]]), system)
+            if _rank(np.vstack([kept, numeric])) == kept.shape[0]:
+                continue
+            kept = np.vstack([kept, numeric])
+        rows.append((f"constraints[{i}]", c.location, c.form))
     for q in system.quasi_coordinates:
         if q.differential is not None:
             own = Form(((q.name, sp.S.One),))
@@ -111,7 +124,8 @@ def solve_rates(system: System) -> Rates:
     independent, automatic = _choose_independent(system, names, numeric, k)
     dependent = [n for n in names if n not in independent]
     beta, beta0 = _solve(A, a0, names, independent, dependent)
-    return Rates(tuple(names), tuple(independent), automatic, beta, beta0)
+    used = sum(1 for where, _, _ in rows if where.startswith("constraints"))
+    return Rates(tuple(names), tuple(independent), automatic, beta, beta0, used)
 
 
 def _numeric(A: sp.Matrix, system: System) -> np.ndarray:

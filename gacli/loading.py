@@ -21,7 +21,11 @@ from gacli.model import (
     Body, Constraint, Coordinate, Force, Form, Function, Input, Parameter,
     QuasiCoordinate, System, Torque,
 )
-from gacli.schema import BodyDecl, LoadDecl, SymbolDecl, SystemDecl, read_declarations
+from gacli import frames as F
+from gacli.schema import (
+    BodyDecl, FrameDecl, LoadDecl, RollingDecl, SymbolDecl, SystemDecl, VectorDecl,
+    VelocityConstraintDecl, did_you_mean, read_declarations,
+)
 from gacli.source import Scalar, SourceFile, parse_source, read_source
 
 RESERVED = {"t": "time", "pi": "the constant π", "dot": "the rate operator", "ddot": "the rate operator"}
@@ -101,13 +105,17 @@ class _Builder:
         )
         inputs = tuple(Input(s.name, self.where_of(s.node), s.description, s.unit, s.latex) for s in self.decl.of_kind("input"))
         quasi = tuple(self._quasi(s) for s in self.decl.of_kind("quasi"))
+        self.frames = self._frames()
+        self.points = self._points()
         bodies = tuple(b for b in (self._body(b) for b in self.decl.bodies) if b)
+        self.body_frames = {b.name: b.frame for b in self.decl.bodies if b.frame is not None}
         forces, torques = self._loads(bodies)
         work = self._form(self.decl.work, "work", self.scopes.work) if self.decl.work else None
         if work is not None and work.dt != 0:
             self.error(self.decl.work, "work", "virtual work has no dt term (δt = 0 in a virtual displacement)")
         potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
         constraints = tuple(c for c in (self._constraint(i, c) for i, c in enumerate(self.decl.constraints)) if c)
+        constraints += self._rolling_constraints(bodies)
         independent = self._independent()
         return System(
             name=self.decl.name, path=self.source.path, sha256=self.source.sha256,
@@ -193,8 +201,10 @@ class _Builder:
                 self.error(sym.differential, f"quasi_coordinates.{sym.name}", "the differential is zero")
         return QuasiCoordinate(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, form)
 
-    def _constraint(self, index: int, text: Scalar) -> Constraint | None:
+    def _constraint(self, index: int, text) -> Constraint | None:
         where = f"constraints[{index}]"
+        if isinstance(text, VelocityConstraintDecl):
+            return self._velocity_constraint(text, where)
         sides = _split_equation(text.text)
         if isinstance(sides, int):
             self.error(text, where, "a constraint has at most one '=' (write lhs = rhs)", offset=sides)
@@ -226,19 +236,115 @@ class _Builder:
             return None
         return tuple(values) + (sp.S.Zero,) * (3 - len(values))
 
+    def _in_frames(self, vector: VectorDecl, where: str, scope: Scope, default: str = F.INERTIAL):
+        """A vector's N components (a list is in ``default``'s axes); None on error."""
+        if vector.point is not None:
+            return self._point_named(vector.point, where)
+        if vector.components:
+            values = self._vector(vector.components, where, scope)
+            if values is None:
+                return None
+            terms = {default: values}
+        else:
+            terms = {}
+            for frame, items in vector.terms:
+                if frame.text not in self.frames:
+                    self.error(frame, where, f"'{frame.text}' is not a frame", did_you_mean(frame.text, self.frames))
+                    return None
+                values = self._vector(items, f"{where}.{frame.text}", scope)
+                if values is None:
+                    return None
+                terms[frame.text] = values
+        total = F.in_inertial(terms, self.frames) if terms else sp.zeros(3, 1)
+        if vector.origin is not None:
+            origin = self._point_named(vector.origin, f"{where}.from")
+            if origin is None:
+                return None
+            total += sp.Matrix(origin)
+        return tuple(total)
+
+    def _point_named(self, node: Scalar, where: str):
+        if node.text in self.points:
+            return self.points[node.text]
+        choices = set(self.points) | {b.name for b in self.decl.bodies}
+        self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, choices))
+        return None
+
+    # -- frames and points -------------------------------------------------
+    def differential(self, expr: sp.Expr) -> sp.Matrix:
+        """d(expr) as a row over the differentials of the rate names, then dt."""
+        coordinates = {s.name for s in self.decl.of_kind("coordinate")}
+        row = [sp.diff(expr, S.value(n)) if n in coordinates else sp.S.Zero for n in self.scopes.rate_names]
+        return sp.Matrix([row + [S.time_derivative(expr, self.scopes.function_chain)]])
+
+    def _frames(self) -> dict[str, F.Frame]:
+        width = len(self.scopes.rate_names) + 1
+        frames = {F.INERTIAL: F.inertial_frame(width)}
+        for decl in self.decl.frames:
+            frame = self._frame(decl, frames)
+            if frame is not None:
+                frames[decl.name] = frame
+        return frames
+
+    def _frame(self, decl: FrameDecl, frames: dict) -> F.Frame | None:
+        where = f"frames.{decl.name}"
+        if decl.name in frames:
+            self.error(decl.node, where, f"'{decl.name}' is already a frame" + (" (N is the inertial frame)" if decl.name == F.INERTIAL else ""))
+            return None
+        parent = decl.parent.text if decl.parent is not None else F.INERTIAL
+        if parent not in frames:
+            self.error(decl.parent, f"{where}.parent", f"'{parent}' is not a frame declared before '{decl.name}'",
+                       did_you_mean(parent, frames))
+            return None
+        rotations = []
+        for i, (axis, text) in enumerate(decl.rotations):
+            angle = self.expression(text, f"{where}.rotations[{i}]", self.scopes.config)
+            if angle is None:
+                return None
+            rotations.append((axis.text.lower(), angle))
+        return F.oriented(decl.name, frames[parent], rotations, self.differential)
+
+    def _points(self) -> dict[str, tuple]:
+        points: dict[str, tuple] = {}
+        self.points = points
+        for decl in self.decl.points:
+            where = f"points.{decl.name}"
+            if decl.name in points:
+                self.error(decl.node, where, f"'{decl.name}' is already a point")
+                continue
+            value = self._in_frames(decl.position, where, self.scopes.config)
+            if value is not None:
+                points[decl.name] = value
+        return points
+
+    # -- bodies and loads --------------------------------------------------
     def _body(self, decl: BodyDecl) -> Body | None:
         where = f"bodies.{decl.name}"
         mass = self.expression(decl.mass, f"{where}.mass", self.scopes.constant)
-        position = self._vector(decl.position, f"{where}.position", self.scopes.config)
+        position = self._in_frames(decl.position, f"{where}.position", self.scopes.config)
         inertia = rotation = None
         if decl.is_rigid:
             inertia = self._inertia(decl, where)
-            rotation = self._rotation(decl, where)
+            rotation = self._frame_rotation(decl, where) if decl.frame is not None else self._rotation(decl, where)
             if inertia is None or rotation is None:
                 return None
         if mass is None or position is None:
             return None
         return Body(decl.name, self.where_of(decl.node), mass, position, inertia, rotation, decl.description)
+
+    def _frame_rotation(self, decl: BodyDecl, where: str) -> tuple[Form, Form, Form] | None:
+        """The body-axis rotation forms of the body's frame (its ω dt, derived)."""
+        frame = self.frames.get(decl.frame.text)
+        if frame is None:
+            self.error(decl.frame, f"{where}.frame", f"'{decl.frame.text}' is not a frame",
+                       did_you_mean(decl.frame.text, self.frames))
+            return None
+        return tuple(self._row_form(frame.omega[i, :]) for i in range(3))
+
+    def _row_form(self, row: sp.Matrix) -> Form:
+        names = self.scopes.rate_names
+        coefficients = tuple((n, row[j]) for j, n in enumerate(names) if row[j] != 0)
+        return Form(coefficients, row[len(names)])
 
     def _inertia(self, decl: BodyDecl, where: str) -> sp.ImmutableMatrix | None:
         values = [self.expression(item, f"{where}.inertia", self.scopes.constant) for item in decl.inertia]
@@ -276,37 +382,127 @@ class _Builder:
 
     def _force(self, load: LoadDecl, bodies: dict[str, Body]) -> Force | None:
         where = f"loads[{load.index}]"
-        vector = self._vector(load.force, f"{where}.force", self.scopes.load)
-        if load.at_body is not None:
-            body = self._body_named(load.at_body, f"{where}.at", bodies)
-            point = body.position if body else None
+        vector = self._in_frames(load.force, f"{where}.force", self.scopes.load)
+        if load.at_name is not None:
+            point = self._place_named(load.at_name, f"{where}.at", bodies)
         else:
-            point = self._vector(load.at_point, f"{where}.at", self.scopes.config)
+            point = self._in_frames(load.at_position, f"{where}.at", self.scopes.config)
         if vector is None or point is None:
             return None
         return Force(vector, point, self.where_of(load.node))
 
+    def _place_named(self, node: Scalar, where: str, bodies: dict[str, Body]):
+        """A body's centre of mass or a named point."""
+        if node.text in bodies:
+            return bodies[node.text].position
+        if node.text in self.points:
+            return self.points[node.text]
+        declared = {b.name for b in self.decl.bodies}
+        if node.text not in declared:
+            self.error(node, where, f"'{node.text}' is not a body or a point",
+                       did_you_mean(node.text, declared | set(self.points)))
+        return None
+
     def _torque(self, load: LoadDecl, bodies: dict[str, Body]) -> Torque | None:
         where = f"loads[{load.index}]"
         body = self._body_named(load.body, f"{where}.body", bodies)
-        values = [self.expression(item, f"{where}.torque", self.scopes.load) for item in load.torque]
-        if body is None or any(v is None for v in values):
+        if body is None:
             return None
         if not body.is_rigid:
             self.error(load.body, f"{where}.body", f"'{body.name}' is a particle; a torque acts on a rigid body")
             return None
-        vector = (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
-        return Torque(vector, body.name, self.where_of(load.node))
+        vector = self._body_axes_torque(load.torque, body, f"{where}.torque")
+        return Torque(vector, body.name, self.where_of(load.node)) if vector is not None else None
+
+    def _body_axes_torque(self, torque: VectorDecl, body: Body, where: str):
+        """A list is in body axes (a scalar: about z); a mapping in frames is turned into body axes."""
+        if torque.components:
+            values = [self.expression(item, where, self.scopes.load) for item in torque.components]
+            if any(v is None for v in values):
+                return None
+            return (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
+        frame = self.body_frames.get(body.name)
+        if frame is None or frame.text not in self.frames:
+            self.error(torque.node, where, f"a torque in frames needs a body with a 'frame'; '{body.name}' has none")
+            return None
+        inertial = self._in_frames(torque, where, self.scopes.load)
+        if inertial is None:
+            return None
+        return tuple(sp.Matrix(self.frames[frame.text].dcm).T * sp.Matrix(inertial))
 
     def _body_named(self, node: Scalar, where: str, bodies: dict[str, Body]) -> Body | None:
         if node.text in bodies:
             return bodies[node.text]
         declared = {b.name for b in self.decl.bodies}
         if node.text not in declared:
-            from gacli.schema import did_you_mean
-
             self.error(node, where, f"'{node.text}' is not a body", did_you_mean(node.text, declared))
         return None
+
+    # -- constraints from geometry -----------------------------------------
+    def _velocity_form(self, position) -> sp.Matrix:
+        """d r of a point (inertial components), as a form vector."""
+        return sp.Matrix.vstack(*(self.differential(c) for c in position))
+
+    def _velocity_constraint(self, decl: VelocityConstraintDecl, where: str) -> Constraint | None:
+        point = self._point_named(decl.point, f"{where}.velocity_of")
+        along = self._in_frames(decl.along, f"{where}.along", self.scopes.config)
+        if point is None or along is None:
+            return None
+        row = sp.Matrix([along]) * self._velocity_form(point)
+        return Constraint(self._row_form(row), self.where_of(decl.node), f"velocity of {decl.point.text} along {list(along)}")
+
+    def _rolling_constraints(self, bodies: tuple[Body, ...]) -> tuple[Constraint, ...]:
+        by_name = {b.name: b for b in bodies}
+        out: list[Constraint] = []
+        for decl in self.decl.rolling:
+            out += self._rolling(decl, by_name)
+        return tuple(out)
+
+    def _rolling(self, decl: RollingDecl, bodies: dict[str, Body]) -> list[Constraint]:
+        """The material point at the contact has the surface's velocity: up to three rows."""
+        where = f"rolling[{decl.index}]"
+        body = self._body_named(decl.body, f"{where}.body", bodies)
+        radius = self.expression(decl.radius, f"{where}.radius", self.scopes.constant)
+        frame = self._rolling_frame(decl, body, where) if body is not None else None
+        surface = self._surface(decl, where)
+        if body is None or radius is None or frame is None or surface is None:
+            return []
+        dcm = sp.Matrix(frame.dcm)
+        axle = None
+        if decl.axle is not None:
+            local = self._vector(decl.axle.components, f"{where}.axle", self.scopes.constant) if decl.axle.components else None
+            if local is None:
+                self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
+                return []
+            axle = dcm * sp.Matrix(local)
+            axle = axle / sp.sqrt(sp.simplify(axle.dot(axle)))
+        centre = sp.Matrix(body.position)
+        contact = F.contact_point(centre, radius, axle)
+        rows = F.rolling_rows(self._velocity_form(body.position), dcm * sp.Matrix(frame.omega), contact - centre,
+                              F.cross_form(sp.Matrix(surface.dcm) * sp.Matrix(surface.omega), contact))
+        return [Constraint(self._row_form(rows[i, :]), self.where_of(decl.node),
+                           f"rolling of {body.name} ({'xyz'[i]})", derived=True)
+                for i in range(3) if not _vanishes(rows[i, :])]
+
+    def _rolling_frame(self, decl: RollingDecl, body: Body, where: str) -> F.Frame | None:
+        if body.is_rigid and body.name in self.body_frames:
+            return self.frames.get(self.body_frames[body.name].text)
+        if body.is_rigid and decl.axle is None:
+            # A sphere given by format-1 forms: its rotation components are taken as inertial ones.
+            omega = sp.Matrix.vstack(*(self._form_row(f) for f in body.rotation))
+            return F.Frame(body.name, sp.ImmutableMatrix(sp.eye(3)), sp.ImmutableMatrix(omega))
+        self.error(decl.body, f"{where}.body", f"'{body.name}' needs a 'frame' to roll with an axle")
+        return None
+
+    def _form_row(self, form: Form) -> sp.Matrix:
+        return sp.Matrix([[form.coefficient(n) for n in self.scopes.rate_names] + [form.dt]])
+
+    def _surface(self, decl: RollingDecl, where: str) -> F.Frame | None:
+        name = decl.on.text if decl.on is not None else F.INERTIAL
+        if name not in self.frames:
+            self.error(decl.on, f"{where}.on", f"'{name}' is not a frame", did_you_mean(name, self.frames))
+            return None
+        return self.frames[name]
 
     def _independent(self) -> tuple[str, ...] | None:
         if self.decl.independent is None:
@@ -318,13 +514,23 @@ class _Builder:
             if node.text in names:
                 self.error(node, where, f"'{node.text}' is listed twice")
             elif node.text not in rated:
-                from gacli.schema import did_you_mean
-
-                self.error(node, where, f"'{node.text}' is not a coordinate or quasi-coordinate",
+                    self.error(node, where, f"'{node.text}' is not a coordinate or quasi-coordinate",
                            did_you_mean(node.text, rated))
             else:
                 names.append(node.text)
         return tuple(names)
+
+
+def _vanishes(row: sp.Matrix) -> bool:
+    """Identically zero, judged exactly when cheap and otherwise at a generic point."""
+    if all(sp.expand(e) == 0 for e in row if sp.count_ops(e) < 200):
+        if all(sp.count_ops(e) < 200 for e in row):
+            return True
+    from gacli.kinematics import random_point
+
+    symbols = set().union(*(e.free_symbols for e in row))
+    point = random_point(symbols)
+    return all(abs(complex(e.xreplace(point).evalf())) < 1e-12 for e in row)
 
 
 def _section(kind: str) -> str:

@@ -73,12 +73,17 @@ class QuasiCoordinate(Declared):
 
 @dataclass(frozen=True)
 class Constraint:
-    """Σ B_s dq_s + B dt = 0 (eq. 14.1); ``relation`` is f when given as f(q, t) = 0."""
+    """Σ B_s dq_s + B dt = 0 (eq. 14.1); ``relation`` is f when given as f(q, t) = 0.
+
+    ``derived`` marks rows gacli derived from geometry (rolling contact): one
+    that repeats the others (two wheels on one axle) is dropped, not an error.
+    """
 
     form: Form
     location: Location
     text: str
     relation: sp.Expr | None = None
+    derived: bool = False
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ def freedom(d: Derivation) -> Section:
     s = d.system
     n, p = len(s.coordinates), len(s.quasi_coordinates)
     dq = sum(1 for q in s.quasi_coordinates if q.differential is not None)
-    ell = len(s.constraints)
+    ell = d.rates.constraints_used
     how = "chosen automatically" if d.rates.chosen_automatically else "as given in the file"
     return Section("Degrees of freedom", (
         f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k}",

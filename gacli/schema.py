@@ -22,12 +22,16 @@ IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 TOP_KEYS = (
     "gacli", "name", "title", "description", "source", "parameters", "functions",
     "inputs", "coordinates", "quasi_coordinates", "constraints", "independent",
-    "bodies", "loads", "work", "potential",
+    "frames", "points", "bodies", "rolling", "loads", "work", "potential",
 )
 SYMBOL_KEYS = ("description", "value", "unit", "latex")
 QUASI_KEYS = ("description", "differential", "unit", "latex")
-BODY_KEYS = ("mass", "position", "inertia", "rotation", "description")
+BODY_KEYS = ("mass", "position", "inertia", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "description")
+FRAME_KEYS = ("parent", "rotations", "sequence", "angles", "description")
+ROLLING_KEYS = ("body", "radius", "axle", "on", "description")
+VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "description")
+AXIS_NAMES = ("x", "y", "z")
 SYMBOL_SECTIONS = ("parameters", "functions", "inputs", "coordinates", "quasi_coordinates")
 
 
@@ -46,16 +50,46 @@ class SymbolDecl:
 
 
 @dataclass(frozen=True)
+class VectorDecl:
+    """A vector as written: a list of components (in the place's default axes),
+    a mapping ``{frame: [x, y, z], ..., from: point}`` summed over frames, or
+    a bare point name (for positions)."""
+
+    node: Node
+    components: tuple[Scalar, ...] = ()
+    terms: tuple[tuple[Scalar, tuple[Scalar, ...]], ...] = ()
+    origin: Scalar | None = None
+    point: Scalar | None = None
+
+
+@dataclass(frozen=True)
+class FrameDecl:
+    """A frame turned from ``parent`` by successive rotations (axis, angle) about its own axes."""
+
+    name: str
+    node: Scalar
+    parent: Scalar | None
+    rotations: tuple[tuple[Scalar, Scalar], ...]
+
+
+@dataclass(frozen=True)
+class PointDecl:
+    name: str
+    node: Scalar
+    position: VectorDecl
+
+
+@dataclass(frozen=True)
 class BodyDecl:
     name: str
     node: Scalar
     mass: Scalar
-    position: tuple[Scalar, ...]
-    position_node: Node
+    position: VectorDecl
     inertia: tuple[Scalar, ...] = ()
     inertia_node: Node | None = None
     rotation: tuple[Scalar, ...] = ()
     rotation_node: Node | None = None
+    frame: Scalar | None = None
     description: str = ""
 
     @property
@@ -67,12 +101,33 @@ class BodyDecl:
 class LoadDecl:
     index: int
     node: Node
-    force: tuple[Scalar, ...] = ()
-    torque: tuple[Scalar, ...] = ()
-    vector_node: Node | None = None
-    at_body: Scalar | None = None
-    at_point: tuple[Scalar, ...] = ()
+    force: VectorDecl | None = None
+    torque: VectorDecl | None = None
+    at_name: Scalar | None = None
+    at_position: VectorDecl | None = None
     body: Scalar | None = None
+
+
+@dataclass(frozen=True)
+class RollingDecl:
+    """A body rolling without slipping on the plane z = 0 (fixed, or turning with frame ``on``)."""
+
+    index: int
+    node: Node
+    body: Scalar
+    radius: Scalar
+    axle: VectorDecl | None = None
+    on: Scalar | None = None
+
+
+@dataclass(frozen=True)
+class VelocityConstraintDecl:
+    """The velocity of a point has no component along a direction (a knife edge)."""
+
+    index: int
+    node: Node
+    point: Scalar
+    along: VectorDecl
 
 
 @dataclass(frozen=True)
@@ -85,10 +140,13 @@ class SystemDecl:
     description: str = ""
     reference: str = ""
     symbols: tuple[SymbolDecl, ...] = ()
-    constraints: tuple[Scalar, ...] = ()
+    constraints: tuple[Scalar | VelocityConstraintDecl, ...] = ()
     independent: tuple[Scalar, ...] | None = None
     independent_node: Node | None = None
+    frames: tuple[FrameDecl, ...] = ()
+    points: tuple[PointDecl, ...] = ()
     bodies: tuple[BodyDecl, ...] = ()
+    rolling: tuple[RollingDecl, ...] = ()
     loads: tuple[LoadDecl, ...] = ()
     work: Scalar | None = None
     potential: Scalar | None = None
@@ -145,6 +203,28 @@ class _Reader:
         items = [self.expression(item, f"{where}[{i}]") for i, item in enumerate(node.items)]
         return tuple(items) if all(items) else ()
 
+    def vector(self, node: Node, where: str, sizes: tuple[int, ...], point: bool = False) -> VectorDecl | None:
+        """A vector: list, {frame: components, from: point} mapping, or (``point``) a point name."""
+        if point and isinstance(node, Scalar):
+            return VectorDecl(node, point=node) if self.name(node, where) else None
+        if not isinstance(node, Mapping):
+            components = self.expressions(node, where, sizes)
+            return VectorDecl(node, components=components) if components else None
+        terms, origin = [], None
+        for key, value in node.items:
+            if key.text == "from":
+                origin = value if self.name(value, f"{where}.from") else None
+                continue
+            if self.name(key, where):
+                components = self.expressions(value, f"{where}.{key.text}", (3,))
+                if not components:
+                    return None
+                terms.append((key, components))
+        if not terms and origin is None:
+            self.error(node, where, "expected components in one or more frames, as {N: [x, y, z]}")
+            return None
+        return VectorDecl(node, terms=tuple(terms), origin=origin)
+
     def name(self, node: Node, where: str) -> str | None:
         if not isinstance(node, Scalar):
             self.error(node, where, f"expected a name, found {_describe(node)}")
@@ -195,7 +275,10 @@ def read_declarations(source: SourceFile) -> tuple[SystemDecl | None, list[Diagn
         constraints=_constraints(reader, top),
         independent=_independent(reader, top),
         independent_node=top["independent"][1] if "independent" in top else None,
+        frames=_frames(reader, top),
+        points=_points(reader, top),
         bodies=_bodies(reader, top),
+        rolling=_rolling(reader, top),
         loads=_loads(reader, top),
         work=_optional_expression(reader, top, "work"),
         potential=_optional_expression(reader, top, "potential"),
@@ -286,8 +369,23 @@ def _constraints(reader: _Reader, top: dict) -> tuple[Scalar, ...]:
     if not isinstance(node, Sequence):
         reader.error(node, "constraints", f"expected a list of constraints, found {_describe(node)}")
         return ()
-    items = [reader.expression(item, f"constraints[{i}]") for i, item in enumerate(node.items)]
+    items = [_constraint(reader, i, item) for i, item in enumerate(node.items)]
     return tuple(item for item in items if item)
+
+
+def _constraint(reader: _Reader, index: int, node: Node):
+    where = f"constraints[{index}]"
+    if not isinstance(node, Mapping):
+        return reader.expression(node, where)
+    fields = reader.mapping(node, where, VELOCITY_CONSTRAINT_KEYS)
+    if "velocity_of" not in fields or "along" not in fields:
+        reader.error(node, where, "a velocity constraint needs 'velocity_of' (a point) and 'along' (a vector)")
+        return None
+    point = fields["velocity_of"][1]
+    along = reader.vector(fields["along"][1], f"{where}.along", (2, 3))
+    if not reader.name(point, f"{where}.velocity_of") or along is None:
+        return None
+    return VelocityConstraintDecl(index, node, point, along)
 
 
 def _independent(reader: _Reader, top: dict) -> tuple[Scalar, ...] | None:
@@ -324,34 +422,56 @@ def _body(reader: _Reader, key: Scalar, node: Node, where: str) -> BodyDecl | No
     for required in ("mass", "position"):
         if required not in fields:
             reader.error(node, where, f"missing required key '{required}'")
-    if ("inertia" in fields) != ("rotation" in fields):
-        have, lack = ("inertia", "rotation") if "inertia" in fields else ("rotation", "inertia")
-        reader.error(fields[have][0], where, f"a rigid body needs both 'inertia' and 'rotation'; '{lack}' is missing")
+    if not _rigid_keys_consistent(reader, fields, where):
         return None
     if "mass" not in fields or "position" not in fields:
         return None
     mass = reader.expression(fields["mass"][1], f"{where}.mass")
-    position = reader.expressions(fields["position"][1], f"{where}.position", (2, 3))
+    position = reader.vector(fields["position"][1], f"{where}.position", (2, 3), point=True)
     inertia, rotation = _rigid_parts(reader, fields, where)
+    frame = fields["frame"][1] if "frame" in fields else None
+    if frame is not None and not reader.name(frame, f"{where}.frame"):
+        return None
     description = reader.text(fields["description"][1], f"{where}.description") if "description" in fields else ""
-    if mass is None or not position:
+    if mass is None or position is None:
         return None
     return BodyDecl(
-        name=key.text, node=key, mass=mass, position=position, position_node=fields["position"][1],
+        name=key.text, node=key, mass=mass, position=position,
         inertia=inertia, inertia_node=fields["inertia"][1] if "inertia" in fields else None,
         rotation=rotation, rotation_node=fields["rotation"][1] if "rotation" in fields else None,
-        description=description,
+        frame=frame, description=description,
     )
+
+
+def _rigid_keys_consistent(reader: _Reader, fields: dict, where: str) -> bool:
+    """A rigid body has inertia and either rotation forms or a frame, not both."""
+    oriented = ("rotation" in fields) or ("frame" in fields)
+    if "rotation" in fields and "frame" in fields:
+        reader.error(fields["frame"][0], where, "give either 'rotation' or 'frame', not both",
+                     "a frame's rotation forms are derived from its orientation")
+        return False
+    if ("inertia" in fields) != oriented:
+        have = "inertia" if "inertia" in fields else ("rotation" if "rotation" in fields else "frame")
+        lack = "'rotation' (or 'frame')" if have == "inertia" else "'inertia'"
+        reader.error(fields[have][0], where, f"a rigid body needs both 'inertia' and 'rotation'; {lack} is missing")
+        return False
+    return True
 
 
 def _rigid_parts(reader: _Reader, fields: dict, where: str) -> tuple[tuple[Scalar, ...], tuple[Scalar, ...]]:
     if "inertia" not in fields:
         return (), ()
-    inertia_node, rotation_node = fields["inertia"][1], fields["rotation"][1]
+    inertia_node = fields["inertia"][1]
     if isinstance(inertia_node, Sequence) and inertia_node.items and isinstance(inertia_node.items[0], Sequence):
         inertia = _matrix(reader, inertia_node, f"{where}.inertia")
     else:
         inertia = reader.expressions(inertia_node, f"{where}.inertia", (0, 1, 3))
+    if "frame" in fields:
+        if isinstance(inertia_node, Scalar):
+            reader.error(inertia_node, f"{where}.inertia", "a body with a frame takes three moments or a 3x3 matrix")
+            return (), ()
+        return inertia, ()
+    rotation_node = fields["rotation"][1]
     planar = isinstance(inertia_node, Scalar)
     sizes = (0, 1) if planar else (3,)
     rotation = reader.expressions(rotation_node, f"{where}.rotation", sizes)
@@ -400,23 +520,138 @@ def _load(reader: _Reader, index: int, node: Node) -> LoadDecl | None:
 
 def _force(reader: _Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
     if "at" not in fields or "body" in fields:
-        reader.error(node, where, "a force needs 'at': a body name or a position [x, y, z]")
+        reader.error(node, where, "a force needs 'at': a body, a point, or a position [x, y, z]")
         return None
-    vector = reader.expressions(fields["force"][1], f"{where}.force", (2, 3))
+    vector = reader.vector(fields["force"][1], f"{where}.force", (2, 3))
     at = fields["at"][1]
     if isinstance(at, Scalar):
         name = reader.name(at, f"{where}.at")
-        return LoadDecl(index, node, force=vector, vector_node=fields["force"][1], at_body=at) if name and vector else None
-    point = reader.expressions(at, f"{where}.at", (2, 3))
-    return LoadDecl(index, node, force=vector, vector_node=fields["force"][1], at_point=point) if point and vector else None
+        return LoadDecl(index, node, force=vector, at_name=at) if name and vector else None
+    position = reader.vector(at, f"{where}.at", (2, 3))
+    return LoadDecl(index, node, force=vector, at_position=position) if position and vector else None
 
 
 def _torque(reader: _Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
     if "body" not in fields or "at" in fields:
         reader.error(node, where, "a torque needs 'body': the body it acts on")
         return None
-    vector = reader.expressions(fields["torque"][1], f"{where}.torque", (0, 1, 3))
+    vector = reader.vector(fields["torque"][1], f"{where}.torque", (0, 1, 3))
     body = fields["body"][1]
     if not reader.name(body, f"{where}.body") or not vector:
         return None
-    return LoadDecl(index, node, torque=vector, vector_node=fields["torque"][1], body=body)
+    return LoadDecl(index, node, torque=vector, body=body)
+
+
+def _frames(reader: _Reader, top: dict) -> tuple[FrameDecl, ...]:
+    if "frames" not in top:
+        return ()
+    node = top["frames"][1]
+    if not isinstance(node, Mapping):
+        reader.error(node, "frames", f"expected a mapping of named frames, found {_describe(node)}")
+        return ()
+    frames = [_frame(reader, key, value) for key, value in node.items if reader.name(key, "frames")]
+    return tuple(f for f in frames if f)
+
+
+def _frame(reader: _Reader, key: Scalar, node: Node) -> FrameDecl | None:
+    where = f"frames.{key.text}"
+    fields = reader.mapping(node, where, FRAME_KEYS)
+    if not isinstance(node, Mapping):
+        return None
+    parent = fields["parent"][1] if "parent" in fields else None
+    if parent is not None and not reader.name(parent, f"{where}.parent"):
+        return None
+    if ("rotations" in fields) == ("sequence" in fields):
+        reader.error(node, where, "a frame needs either 'rotations' ([[axis, angle], ...]) or 'sequence' and 'angles'")
+        return None
+    rotations = _rotations(reader, fields, where)
+    return FrameDecl(key.text, key, parent, rotations) if rotations is not None else None
+
+
+def _rotations(reader: _Reader, fields: dict, where: str):
+    if "rotations" in fields:
+        node = fields["rotations"][1]
+        if not isinstance(node, Sequence) or not node.items:
+            reader.error(node, f"{where}.rotations", "expected a list of [axis, angle] pairs")
+            return None
+        pairs = []
+        for i, item in enumerate(node.items):
+            if not (isinstance(item, Sequence) and len(item.items) == 2 and isinstance(item.items[0], Scalar)):
+                reader.error(item, f"{where}.rotations[{i}]", "expected [axis, angle], as [z, psi]")
+                return None
+            axis, angle = item.items
+            if not _axis_ok(reader, axis, f"{where}.rotations[{i}]"):
+                return None
+            angle = reader.expression(angle, f"{where}.rotations[{i}]")
+            if angle is None:
+                return None
+            pairs.append((axis, angle))
+        return tuple(pairs)
+    return _sequence(reader, fields, where)
+
+
+def _sequence(reader: _Reader, fields: dict, where: str):
+    sequence = fields["sequence"][1]
+    if "angles" not in fields:
+        reader.error(sequence, where, "a 'sequence' needs 'angles'")
+        return None
+    angles = fields["angles"][1]
+    text = sequence.text if isinstance(sequence, Scalar) else ""
+    if not re.fullmatch(r"[XYZxyz]{1,3}", text):
+        reader.error(sequence, f"{where}.sequence", "expected body-axis rotations such as ZXZ or ZXY")
+        return None
+    values = reader.expressions(angles, f"{where}.angles", (len(text),))
+    if not values:
+        return None
+    return tuple((Scalar(axis.lower(), "str", sequence.line, sequence.column, None), angle)
+                 for axis, angle in zip(text, values))
+
+
+def _axis_ok(reader: _Reader, axis: Scalar, where: str) -> bool:
+    if axis.text.lower() in AXIS_NAMES:
+        return True
+    reader.error(axis, where, f"'{axis.text}' is not an axis; expected x, y or z")
+    return False
+
+
+def _points(reader: _Reader, top: dict) -> tuple[PointDecl, ...]:
+    if "points" not in top:
+        return ()
+    node = top["points"][1]
+    if not isinstance(node, Mapping):
+        reader.error(node, "points", f"expected a mapping of named points, found {_describe(node)}")
+        return ()
+    out = []
+    for key, value in node.items:
+        if reader.name(key, "points"):
+            vector = reader.vector(value, f"points.{key.text}", (2, 3))
+            if vector:
+                out.append(PointDecl(key.text, key, vector))
+    return tuple(out)
+
+
+def _rolling(reader: _Reader, top: dict) -> tuple[RollingDecl, ...]:
+    if "rolling" not in top:
+        return ()
+    node = top["rolling"][1]
+    if not isinstance(node, Sequence):
+        reader.error(node, "rolling", f"expected a list of rolling contacts, found {_describe(node)}")
+        return ()
+    out = []
+    for i, item in enumerate(node.items):
+        where = f"rolling[{i}]"
+        fields = reader.mapping(item, where, ROLLING_KEYS)
+        if not isinstance(item, Mapping):
+            continue
+        missing = [k for k in ("body", "radius") if k not in fields]
+        if missing:
+            reader.error(item, where, f"missing required key '{missing[0]}'")
+            continue
+        body = fields["body"][1]
+        radius = reader.expression(fields["radius"][1], f"{where}.radius")
+        axle = reader.vector(fields["axle"][1], f"{where}.axle", (3,)) if "axle" in fields else None
+        on = fields["on"][1] if "on" in fields else None
+        if reader.name(body, f"{where}.body") and radius and ("axle" not in fields or axle) \
+                and (on is None or reader.name(on, f"{where}.on")):
+            out.append(RollingDecl(i, item, body, radius, axle, on))
+    return tuple(out)

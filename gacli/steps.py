@@ -51,7 +51,7 @@ def worked_solution(d: Derivation, budget: int = STEP_BUDGET_OPS) -> tuple[Step,
 
 def degrees_of_freedom(d: Derivation) -> Step:
     s = d.system
-    n, p, ell = len(s.coordinates), len(s.quasi_coordinates), len(s.constraints)
+    n, p, ell = len(s.coordinates), len(s.quasi_coordinates), d.rates.constraints_used
     dq = sum(1 for q in s.quasi_coordinates if q.differential is not None)
     items = [
         f"n = {n} coordinates: {_names(s.coordinates)}",

@@ -1,0 +1,117 @@
+"""Frames, vectors in frames, and rolling contact: geometry behind format-1 forms.
+
+A frame is oriented from its parent by a chain of simple rotations about its
+own successive axes. From the chain gacli derives the direction cosines
+(``dcm``: components in the frame → components in N) and the body-axis
+components of ω dt as differential forms, exactly what a format-1 ``rotation``
+states by hand. A *form vector* is a 3 × (R + 1) matrix: the coefficients of
+the differentials of the R coordinates and quasi-coordinates, then of dt.
+
+Rolling without slipping (the material point of the body at the contact has
+the velocity of the surface) becomes Pfaffian constraints, eq. (14.1).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+AXES = {"x": 0, "y": 1, "z": 2}
+INERTIAL = "N"
+
+
+def simple_rotation(axis: str, angle: sp.Expr) -> sp.Matrix:
+    """R with v_parent = R v_child, for the child turned by ``angle`` about the common ``axis``."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    if axis == "x":
+        return sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
+    if axis == "y":
+        return sp.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def unit(axis: str) -> sp.Matrix:
+    e = sp.zeros(3, 1)
+    e[AXES[axis]] = 1
+    return e
+
+
+@dataclass(frozen=True)
+class Frame:
+    """A frame's direction cosines (frame → N) and ω dt in its own axes, as a form vector."""
+
+    name: str
+    dcm: sp.ImmutableMatrix
+    omega: sp.ImmutableMatrix
+
+
+def inertial_frame(width: int) -> Frame:
+    return Frame(INERTIAL, sp.ImmutableMatrix(sp.eye(3)), sp.ImmutableMatrix(sp.zeros(3, width)))
+
+
+def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
+             differential: Callable[[sp.Expr], sp.Matrix]) -> Frame:
+    """The frame reached from ``parent`` by successive rotations about the current axes.
+
+    ω_child = R_relᵀ ω_parent + Σ_i (axis_i in child axes) d(angle_i), where
+    the i-th axis is carried to the child by the rotations after it.
+    """
+    relative = sp.eye(3)
+    for axis, angle in rotations:
+        relative = relative * simple_rotation(axis, angle)
+    omega = relative.T * sp.Matrix(parent.omega)
+    after = sp.eye(3)
+    for axis, angle in reversed(rotations):
+        omega += (after.T * unit(axis)) * differential(angle)
+        after = simple_rotation(axis, angle) * after
+    return Frame(name, sp.ImmutableMatrix(sp.Matrix(parent.dcm) * relative),
+                 sp.ImmutableMatrix(omega.applyfunc(sp.expand_trig)))
+
+
+def sequence_rotations(sequence: str, angles: Sequence[sp.Expr]) -> list[tuple[str, sp.Expr]]:
+    """'ZXZ' with three angles → successive body-axis rotations."""
+    return [(axis.lower(), angle) for axis, angle in zip(sequence, angles)]
+
+
+def in_inertial(components: Mapping[str, Sequence[sp.Expr]], frames: Mapping[str, Frame]) -> sp.Matrix:
+    """Σ over frames of their components, expressed in N."""
+    total = sp.zeros(3, 1)
+    for frame_name, values in components.items():
+        total += sp.Matrix(frames[frame_name].dcm) * sp.Matrix(values)
+    return total
+
+
+def cross_form(form: sp.Matrix, vector: sp.Matrix) -> sp.Matrix:
+    """(form vector) × (plain vector), column by column."""
+    out = sp.zeros(3, form.cols)
+    for j in range(form.cols):
+        out[:, j] = form[:, j].cross(vector)
+    return out
+
+
+def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None) -> sp.Matrix:
+    """Where a wheel (axle ≠ None) or a sphere of ``radius`` touches the plane z = 0 below it.
+
+    For a wheel the contact lies in the wheel's plane, straight "down" from
+    the centre: along n − (n·a)a normalised, n the plane's normal. The wheel is
+    taken to be above the plane, so |cos| of its tilt is its cos.
+    """
+    normal = sp.Matrix([0, 0, 1])
+    if axle is None:
+        return centre - radius * normal
+    along = normal - normal.dot(axle) * axle
+    length = sp.sqrt(sp.trigsimp(1 - normal.dot(axle) ** 2))
+    length = length.replace(sp.Abs, lambda arg: arg)
+    return centre - radius * along / length
+
+
+def rolling_rows(centre_form: sp.Matrix, omega_form: sp.Matrix, offset: sp.Matrix,
+                 surface_form: sp.Matrix) -> sp.Matrix:
+    """v dt of the body's material point at the contact minus the surface's (eq. 14.1 rows).
+
+    v_P dt = dr_G + (ω dt) × (r_P − r_G); the surface point moves by
+    ``surface_form``.
+    """
+    return centre_form + cross_form(omega_form, offset) - surface_form
