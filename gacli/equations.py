@@ -16,6 +16,7 @@ so G is never expanded to find the equations.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -43,8 +44,12 @@ class Derivation:
     mass_matrix: sp.ImmutableMatrix
     forcing: sp.ImmutableMatrix
     generalized_forces: sp.ImmutableMatrix
-    gibbs: sp.Expr
     kinematic_equations: tuple[tuple[str, sp.Expr], ...]
+
+    @functools.cached_property
+    def gibbs(self) -> sp.Expr:
+        """G with its acceleration-free terms dropped (eqs. 14.17, 14.21); built on first use."""
+        return gibbs_function(self.system, self.rates, self.motions)
 
     @property
     def k(self) -> int:
@@ -123,12 +128,10 @@ def derive(system: System, *, progress: Callable[[str], None] | None = None) -> 
     step("Gibbs-Appell equations (14.19)")
     M, inertial = _mass_and_inertial_terms(motions, rates)
     kinematic = tuple((c.name, rates.rate(c.name)) for c in system.coordinates)
-    step("Gibbs function (14.17, 14.21)")
-    G = gibbs_function(system, rates, motions)
     return Derivation(
         system=system, rates=rates, motions=motions,
         mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(Q - inertial),
-        generalized_forces=Q, gibbs=G, kinematic_equations=kinematic,
+        generalized_forces=Q, kinematic_equations=kinematic,
     )
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.kinematics import BodyMotion, Rates, configuration_chain, point_motion
+from gacli.kinematics import BodyMotion, Rates, point_partials
 from gacli.model import System
 
 
@@ -30,10 +30,8 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
 
 def _from_forces(system: System, rates: Rates) -> sp.Matrix:
     Q = sp.zeros(rates.k, 1)
-    chain = configuration_chain(system, rates)
     for force in system.forces:
-        partials = point_motion(force.point, system, rates, chain).partials
-        Q += partials.T * sp.Matrix(force.vector)
+        Q += point_partials(force.point, system, rates).T * sp.Matrix(force.vector)
     return Q
 
 

@@ -37,6 +37,8 @@ class Rates:
     beta: sp.ImmutableMatrix
     beta0: sp.ImmutableMatrix
     constraints_used: int = 0
+    relations: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])
+    relations_dt: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 1, [])
 
     @property
     def k(self) -> int:
@@ -125,7 +127,8 @@ def solve_rates(system: System) -> Rates:
     dependent = [n for n in names if n not in independent]
     beta, beta0 = _solve(A, a0, names, independent, dependent)
     used = sum(1 for where, _, _ in rows if where.startswith("constraints"))
-    return Rates(tuple(names), tuple(independent), automatic, beta, beta0, used)
+    return Rates(tuple(names), tuple(independent), automatic, beta, beta0, used,
+                 sp.ImmutableMatrix(A), sp.ImmutableMatrix(a0))
 
 
 def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
@@ -238,36 +241,80 @@ def configuration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr
     return chain
 
 
-def point_motion(position, system: System, rates: Rates, chain) -> Motion:
-    """v = J β u + (J β₀ + ∂r/∂t), and the u̇-free part of its derivative (eq. 14.14)."""
+def rate_symbols_chain(system: System) -> dict[sp.Symbol, sp.Symbol]:
+    """d/dt with the rates kept as plain symbols: q → dot(q), and the functions."""
+    chain: dict[sp.Symbol, sp.Symbol] = {S.value(c.name): S.rate(c.name) for c in system.coordinates}
+    chain.update(function_chain(system))
+    return chain
+
+
+def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Expr]:
+    """γ with r̈ = β u̇ + γ for every rate (γ = 0 for the independent ones).
+
+    The relations A ṙ + a₀ = 0 are differentiated, A r̈ + Ȧ ṙ + ȧ₀ = 0, and
+    solved for the dependent accelerations; differentiating the constraints
+    rather than the solved β keeps the expressions small.
+    """
+    names = list(rates.names)
+    gamma = {n: sp.S.Zero for n in names}
+    dependent = [n for n in names if n not in rates.independent]
+    if not dependent:
+        return gamma
+    A, a0 = sp.Matrix(rates.relations), sp.Matrix(rates.relations_dt)
+    chain = rate_symbols_chain(system)
+    velocity = sp.Matrix([S.rate(n) for n in names])
+    c = (A * velocity + a0).applyfunc(lambda e: S.time_derivative(e, chain))
+    c = c.xreplace({S.rate(n): rates.rate(n) for n in dependent})
+    Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
+    solution = Ad.LUsolve(-c)
+    gamma.update({n: solution[i] for i, n in enumerate(dependent)})
+    return gamma
+
+
+def point_motion(position, system: System, rates: Rates, gamma=None) -> Motion:
+    """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14)."""
     r = sp.Matrix(position)
     coords = [c.name for c in system.coordinates]
     J = r.jacobian([S.value(c) for c in coords])
     b, b0 = rates.rows(coords)
     functions = function_chain(system)
     explicit = r.applyfunc(lambda e: S.time_derivative(e, functions))
-    return _motion(J * b, J * b0 + explicit, rates, chain)
+    velocity_symbols = J * sp.Matrix([S.rate(c) for c in coords]) + explicit
+    gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
+    rest = J * sp.Matrix([gamma[c] for c in coords]) + _rest_of_derivative(velocity_symbols, system, rates)
+    return Motion(sp.ImmutableMatrix(J * b), sp.ImmutableMatrix(J * b0 + explicit), sp.ImmutableMatrix(rest))
 
 
-def rotation_motion(rotation, system: System, rates: Rates, chain) -> Motion:
-    """ω = W β u + (W β₀ + W₀) from the rotation forms; α from its derivative."""
+def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motion:
+    """ω = W β u + (W β₀ + W₀) from the rotation forms; α = W β u̇ + (W γ + Ẇ ṙ + Ẇ₀)."""
     names = list(rates.names)
     W = sp.Matrix([[form.coefficient(n) for n in names] for form in rotation])
     W0 = sp.Matrix([form.dt for form in rotation])
-    return _motion(W * rates.beta, W * rates.beta0 + W0, rates, chain)
+    omega_symbols = W * sp.Matrix([S.rate(n) for n in names]) + W0
+    gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
+    rest = W * sp.Matrix([gamma[n] for n in names]) + _rest_of_derivative(omega_symbols, system, rates)
+    return Motion(sp.ImmutableMatrix(W * rates.beta), sp.ImmutableMatrix(W * rates.beta0 + W0), sp.ImmutableMatrix(rest))
 
 
-def _motion(partials, v0, rates: Rates, chain) -> Motion:
-    velocity = partials * sp.Matrix(rates.speeds) + v0
-    rest = velocity.applyfunc(lambda e: S.time_derivative(e, chain))
-    return Motion(sp.ImmutableMatrix(partials), sp.ImmutableMatrix(v0), sp.ImmutableMatrix(rest))
+def point_partials(position, system: System, rates: Rates) -> sp.Matrix:
+    """The partial velocities J β of a point (the α_rs of eq. 14.6)."""
+    coords = [c.name for c in system.coordinates]
+    J = sp.Matrix(position).jacobian([S.value(c) for c in coords])
+    return J * rates.rows(coords)[0]
+
+
+def _rest_of_derivative(vector: sp.Matrix, system: System, rates: Rates) -> sp.Matrix:
+    """d/dt of an expression linear in the rates, without its r̈ terms, the rates then put as β u + β₀."""
+    chain = rate_symbols_chain(system)
+    derivative = vector.applyfunc(lambda e: S.time_derivative(e, chain))
+    return derivative.xreplace({S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent})
 
 
 def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
-    chain = configuration_chain(system, rates)
+    gamma = dependent_acceleration_rest(system, rates)
     out = []
     for body in system.bodies:
-        linear = point_motion(body.position, system, rates, chain)
-        angular = rotation_motion(body.rotation, system, rates, chain) if body.is_rigid else None
+        linear = point_motion(body.position, system, rates, gamma=gamma)
+        angular = rotation_motion(body.rotation, system, rates, gamma=gamma) if body.is_rigid else None
         out.append(BodyMotion(body, linear, angular))
     return tuple(out)
