@@ -25,7 +25,7 @@ def test_version():
     assert result.output.strip() == f"gacli {__version__}"
 
 
-@pytest.mark.parametrize("command", ["derive", "gibbs"])
+@pytest.mark.parametrize("command", ["derive", "gibbs", "simulate"])
 def test_every_command_help_has_a_working_example(command):
     result = run(command, "--help")
     assert result.exit_code == 0
@@ -109,3 +109,22 @@ def test_public_api_is_sorted_and_complete():
     assert gacli.__all__ == sorted(gacli.__all__)
     for name in gacli.__all__:
         assert getattr(gacli, name) is not None
+
+
+def test_methods_match_the_simulator():
+    from gacli.cli import METHODS
+    from gacli.simulate import METHODS as SIMULATOR
+
+    assert tuple(METHODS) == tuple(SIMULATOR)
+
+
+def test_simulate_command(tmp_path):
+    pytest.importorskip("scipy")
+    csv = tmp_path / "run.csv"
+    result = run("simulate", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--init", "theta=0.1",
+                 "--t-end", "1", "--csv", str(csv))
+    assert result.exit_code == 0, result.output
+    assert csv.read_text().splitlines()[0] == "t,theta,phi,dot(theta)"
+    missing = run("simulate", SPHERE, "--t-end", "1")
+    assert missing.exit_code == 1
+    assert "Traceback" not in missing.output
