@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 AXES = {"x": 0, "y": 1, "z": 2}
+_TRIGSIMP_OPS = 40
 INERTIAL = "N"
 
 
@@ -102,8 +103,12 @@ def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None) ->
     if axle is None:
         return centre - radius * normal
     along = normal - normal.dot(axle) * axle
-    length = sp.sqrt(sp.trigsimp(1 - normal.dot(axle) ** 2))
-    length = length.replace(sp.Abs, lambda arg: arg)
+    # |n − (n·a)a|² = 1 − (n·a)² = a_x² + a_y² for a unit axle; trigsimp
+    # turns the rear wheel's into cos² but costs seconds on a steered wheel's.
+    square = axle[0] ** 2 + axle[1] ** 2
+    if sp.count_ops(square) <= _TRIGSIMP_OPS:
+        square = sp.trigsimp(square)
+    length = sp.sqrt(square).replace(sp.Abs, lambda arg: arg)
     return centre - radius * along / length
 
 

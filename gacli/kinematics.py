@@ -220,7 +220,7 @@ def _solve(A, a0, names, independent, dependent):
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
     """Cancel rational clutter that elimination leaves, while it is cheap."""
-    return sp.cancel(expr) if sp.count_ops(expr) < 200 else expr
+    return sp.cancel(expr) if S.is_small(expr, 400) else expr
 
 
 def _error(system: System, location, where: str, message: str, hint: str = "") -> SystemFileError:

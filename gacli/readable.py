@@ -10,6 +10,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.symbols import is_small
+
 # sympy.simplify grows quickly with size; above this many operations only
 # cheap rational cancellation is tried.
 SIMPLIFY_OPS = 250
@@ -26,6 +28,8 @@ class Tidy:
     spent: int = 0
 
     def __call__(self, expr: sp.Expr) -> sp.Expr:
+        if not is_small(expr, 8 * SIMPLIFY_OPS):
+            return expr
         ops = sp.count_ops(expr)
         if self.spent + ops > self.budget:
             return expr
@@ -36,7 +40,7 @@ class Tidy:
 
     def collected(self, expr: sp.Expr, accelerations) -> sp.Expr:
         """Collected on the accelerations, each coefficient tidied."""
-        expanded = sp.expand(expr) if sp.count_ops(expr) <= SIMPLIFY_OPS else expr
+        expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) else expr
         parts = sp.collect(expanded, list(accelerations), evaluate=False)
         total = sp.S.Zero
         for key in sorted(parts, key=sp.default_sort_key):

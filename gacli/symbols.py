@@ -65,3 +65,15 @@ def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Exp
     for sym in sorted(free & chain.keys(), key=sp.default_sort_key):
         total += sp.diff(expr, sym) * chain[sym]
     return total
+
+
+def is_small(expr: sp.Expr, limit: int) -> bool:
+    """Whether the tree of ``expr`` has at most ``limit`` nodes (stops counting early).
+
+    ``sympy.count_ops`` walks all of a large expression, which costs more than
+    most of what one would skip with it.
+    """
+    for count, _ in enumerate(sp.preorder_traversal(expr), start=1):
+        if count > limit:
+            return False
+    return True

@@ -304,6 +304,8 @@ _ZERO: list[Term] = [(False, "0")]
 
 def tidy(expr: sp.Expr) -> sp.Expr:
     """A simpler equal expression for display, on a small budget."""
+    if not S.is_small(expr, 20 * SIMPLIFY_OPS):
+        return expr
     if sp.count_ops(expr) > SIMPLIFY_OPS:
         expr = sp.factor_terms(sp.cancel(expr))
     if sp.count_ops(expr) <= SIMPLIFY_OPS:
