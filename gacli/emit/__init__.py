@@ -1,0 +1,50 @@
+"""Emitters: a derivation → the text of generated files.
+
+Every emitter is a pure function ``emit_X(derivation, **options)`` that
+returns ``{file name: file text}`` and writes nothing; the CLI writes the
+files. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
+imported on first use, so that ``gacli check`` does not pay for them.
+
+>>> sorted(EMITTERS)
+['c', 'latex', 'python']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from gacli.equations import Derivation
+
+Emitter = Callable[..., dict[str, str]]
+
+
+def emit_python(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>.py": text}``: see :mod:`gacli.emit.python`."""
+    from gacli.emit.python import emit_python as emit
+
+    return emit(derivation, **options)
+
+
+def emit_c(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>.h": header, "<name>.c": source}``: see :mod:`gacli.emit.c`."""
+    from gacli.emit.c import emit_c as emit
+
+    return emit(derivation, **options)
+
+
+def emit_latex(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>.tex": text}``; ``standalone=True`` for a whole document: see :mod:`gacli.emit.latex`."""
+    from gacli.emit.latex import emit_latex as emit
+
+    return emit(derivation, **options)
+
+
+EMITTERS: dict[str, Emitter] = {
+    "python": emit_python,
+    "c": emit_c,
+    "latex": emit_latex,
+}
+
+__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_latex", "emit_python"]

@@ -1,0 +1,256 @@
+"""The C99 header and source of a derivation (interface 1 of the generated-code spec).
+
+:func:`emit_c` returns ``{"<name>.h": header, "<name>.c": source}``:
+
+.. code:: text
+
+    <NAME>_NX, _NU, _NP, _NR          sizes of x, u, p and r
+    <NAME>_X_*, _P_*, _R_*            index of each entry (see naming.py)
+    void <name>_mass_matrix(t, x, p, r, M)    M: k*k, row-major
+    void <name>_forcing(t, x, p, r, F)        F: k
+    int  <name>_rhs(t, x, p, r, xdot)         xdot: [q', u'], 0 or a pivot number
+
+The code is C99 with no allocation, no globals and nothing beyond
+``<math.h>``, and compiles cleanly with ``-std=c99 -Wall -Wextra -Werror
+-pedantic``: unused arguments are cast to void, π is a literal (``M_PI`` is
+not C99). Each function shares its common subexpressions; ``rhs`` fills a
+local ``double M[k*k]`` and solves M u' = F in place by a Cholesky
+factorization written as loops for the fixed size k.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from string import Template
+
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.emit.naming import (
+    Entry, Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
+    lower_triangle, mass_matrix_equations,
+)
+from gacli.emit.printers import Block, GacliCPrinter, print_block
+from gacli.equations import Derivation
+
+INDENT = "    "
+ARGUMENTS = ("t", "x", "p", "r")
+
+HEADER = Template('''\
+$comment
+#ifndef $guard
+#define $guard
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Sizes: state x = (q, u), independent rates u, parameters p, arguments r. */
+$sizes
+
+/* x: the coordinates q, then the independent rates u. */
+$state
+
+/* p: the parameters. */
+$parameters
+
+/* r: the inputs, then each free function of time and its rates. */
+$r
+
+/* The mass matrix M, NU*NU entries, row-major, symmetric positive definite. */
+$mass_matrix;
+
+/* The forcing F of M u' = F, NU entries. */
+$forcing;
+
+/* xdot = [q', u'], NX entries, with M u' = F solved by Cholesky.
+   Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive:
+   M is not positive definite, and the u' part of xdot is not valid. */
+$rhs;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* $guard */
+''')
+
+SOURCE = Template('''\
+$comment
+#include <math.h>
+
+#include "$name.h"
+
+/* Solve M u = F in place for symmetric positive definite M (NU*NU,
+   row-major), reading only its lower triangle: M = L L^T with L stored
+   over that triangle, and F becomes u. Returns 0, or j + 1 when pivot j
+   is not positive (or not a number). */
+static int ${name}_cholesky_solve(double *M, double *F)
+{
+    const int k = ${prefix}_NU;
+    int i, j, s;
+    for (j = 0; j < k; ++j) {
+        double d = M[j*k + j];
+        for (s = 0; s < j; ++s) {
+            d -= M[j*k + s]*M[j*k + s];
+        }
+        if (!(d > 0.0)) {
+            return j + 1;
+        }
+        d = sqrt(d);
+        M[j*k + j] = d;
+        for (i = j + 1; i < k; ++i) {
+            double v = M[i*k + j];
+            for (s = 0; s < j; ++s) {
+                v -= M[i*k + s]*M[j*k + s];
+            }
+            M[i*k + j] = v/d;
+        }
+    }
+    for (i = 0; i < k; ++i) {
+        double v = F[i];
+        for (s = 0; s < i; ++s) {
+            v -= M[i*k + s]*F[s];
+        }
+        F[i] = v/M[i*k + i];
+    }
+    for (i = k - 1; i >= 0; --i) {
+        double v = F[i];
+        for (s = i + 1; s < k; ++s) {
+            v -= M[s*k + i]*F[s];
+        }
+        F[i] = v/M[i*k + i];
+    }
+    return 0;
+}
+$functions''')
+
+FUNCTION = Template('''
+$signature
+{
+$body
+}
+''')
+
+
+def emit_c(derivation: Derivation) -> dict[str, str]:
+    """The C header and source of a derivation.
+
+    Raises:
+        EmitError: when an expression has no C rendering.
+    """
+    lay = layout(derivation)
+    comment = _comment(header_lines(derivation, "c"))
+    header = HEADER.substitute(
+        comment=comment, guard=f"{lay.prefix}_H", sizes=_sizes(lay),
+        state=_indices(lay.state_entries), parameters=_indices(lay.parameter_entries) or "/* (none) */",
+        r=_indices(lay.r_entries) or "/* (none: r may be NULL) */",
+        mass_matrix=_signature(lay, "mass_matrix"), forcing=_signature(lay, "forcing"), rhs=_signature(lay, "rhs"),
+    )
+    functions = [_mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay)]
+    source = SOURCE.substitute(comment=comment, name=lay.system, prefix=lay.prefix, functions="".join(functions))
+    return {f"{lay.system}.h": header, f"{lay.system}.c": source}
+
+
+# -- header pieces ---------------------------------------------------------------
+
+def _comment(lines: Sequence[str]) -> str:
+    safe = [line.replace("*/", "* /") for line in lines]
+    return "\n".join(["/* " + safe[0], *(" * " + line for line in safe[1:]), " */"])
+
+
+def _sizes(lay: Layout) -> str:
+    sizes = [("NX", len(lay.state)), ("NU", lay.k), ("NP", len(lay.parameters)), ("NR", len(lay.r))]
+    return _defines([(f"{lay.prefix}_{name}", str(size), "") for name, size in sizes])
+
+
+def _indices(entries: Sequence[Entry]) -> str:
+    return _defines([(e.macro, str(e.index), e.name) for e in entries])
+
+
+def _defines(rows: Sequence[tuple[str, str, str]]) -> str:
+    width = max((len(macro) for macro, _, _ in rows), default=0)
+    lines = []
+    for macro, value, note in rows:
+        line = f"#define {macro.ljust(width)} {value}"
+        lines.append(f"{line.ljust(width + 12)} /* {note} */" if note else line)
+    return "\n".join(lines)
+
+
+_RETURNS = {"mass_matrix": ("void", "M"), "forcing": ("void", "F"), "rhs": ("int", "xdot")}
+
+
+def _signature(lay: Layout, function: str) -> str:
+    kind, out = _RETURNS[function]
+    opening = f"{kind} {lay.function(function)}("
+    return (f"{opening}double t, const double *x, const double *p,\n"
+            f"{' ' * len(opening)}const double *r, double *{out})")
+
+
+# -- the three functions ----------------------------------------------------------
+
+def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, mass_matrix_equations(derivation))
+    return _function(lay, "mass_matrix", [], block, _assign("M", block.results))
+
+
+def _forcing(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, forcing_equations(derivation))
+    return _function(lay, "forcing", [], block, _assign("F", block.results))
+
+
+def _rhs(derivation: Derivation, lay: Layout) -> str:
+    lower = lower_mass_matrix_equations(derivation)
+    block = _block(lay, kinematic_equations(derivation) + lower + forcing_equations(derivation))
+    n, m, k = lay.n, len(lower), lay.k
+    locals_ = [
+        f"double M[{lay.prefix}_NU*{lay.prefix}_NU]; /* only the lower triangle is set and read */",
+        f"double *F = xdot + ({lay.prefix}_NX - {lay.prefix}_NU);",
+    ]
+    assignments = [
+        *_assign("xdot", block.results[:n]),
+        *(f"M[{i * k + j}] = {code};" for (i, j), code in zip(lower_triangle(k), block.results[n:n + m])),
+        *_assign("F", block.results[n + m:]),
+        f"return {lay.function('cholesky_solve')}(M, F);",
+    ]
+    return _function(lay, "rhs", locals_, block, assignments)
+
+
+def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:
+    block, printer = print_block(GacliCPrinter, lay.identifiers, equations)
+    printer.includes()  # raises if the code would need more than <math.h>
+    return block
+
+
+def _function(lay: Layout, function: str, locals_: list[str], block: Block, assignments: list[str]) -> str:
+    """Unused arguments, unpacked entries, temporaries, then the assignments."""
+    body = [
+        *(f"(void){arg};" for arg in _unused(lay, block)),
+        *locals_,
+        *_unpack(lay, block),
+        *(f"const double {name} = {code};" for name, code in block.temporaries),
+        *assignments,
+    ]
+    return FUNCTION.substitute(signature=_signature(lay, function), body="\n".join(INDENT + line for line in body))
+
+
+def _unused(lay: Layout, block: Block) -> list[str]:
+    read = {"t": S.T in block.symbols}
+    for vector in ("x", "p", "r"):
+        read[vector] = any(e.symbol in block.symbols for e in _vector(lay, vector))
+    return [arg for arg in ARGUMENTS if not read[arg]]
+
+
+def _unpack(lay: Layout, block: Block) -> list[str]:
+    return [
+        f"const double {e.identifier} = {vector}[{e.macro}];"
+        for vector in ("x", "p", "r") for e in _vector(lay, vector) if e.symbol in block.symbols
+    ]
+
+
+def _vector(lay: Layout, vector: str) -> tuple[Entry, ...]:
+    return {"x": lay.state_entries, "p": lay.parameter_entries, "r": lay.r_entries}[vector]
+
+
+def _assign(array: str, codes: Sequence[str]) -> list[str]:
+    return [f"{array}[{i}] = {code};" for i, code in enumerate(codes)]

@@ -1,0 +1,206 @@
+"""The Python module of a derivation (interface 1 of the generated-code spec).
+
+:func:`emit_python` returns ``{"<name>.py": text}``; the module needs only
+NumPy and the standard library:
+
+.. code:: text
+
+    STATE, PARAMETERS, INPUTS   tuples of names: the order of x, p and r
+    DEFAULTS                    parameter values the system file gives
+    mass_matrix(t, x, p, r=())  M, (k, k) ndarray, symmetric
+    forcing(t, x, p, r=())      F, (k,) ndarray, with M u' = F
+    rhs(t, x, p, r=())          [q', u'], (len(STATE),) ndarray
+
+``r`` is a sequence or a callable ``r(t, x)``. Every function shares common
+subexpressions (SymPy's ``cse``) within itself; ``rhs`` computes M and F in
+one block and solves M u' = F by a Cholesky factorization, never by a
+symbolic inverse. Scalars go through the ``math`` module: the state of an
+ODE solver is a handful of floats, for which ``math`` is faster than NumPy.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from string import Template
+
+import sympy as sp
+
+from gacli.emit.naming import (
+    Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
+    mass_matrix_equations,
+)
+from gacli.emit.printers import Block, GacliPythonPrinter, print_block
+from gacli.equations import Derivation
+
+INDENT = "    "
+
+MODULE = Template('''\
+$header
+"""Equations of motion of $name, derived by the Gibbs-Appell method.
+
+    M(q, t) u' = F(q, u, t)    with k = $k independent rates u
+    q' = beta u + beta0        the kinematic equations
+
+x = STATE is (q, u); p = PARAMETERS; r = INPUTS, given as a sequence or as
+a callable r(t, x) that returns one.
+"""
+
+$imports
+
+STATE = $state
+PARAMETERS = $parameters
+INPUTS = $inputs
+DEFAULTS = $defaults
+$functions''')
+
+FUNCTION = Template('''
+
+def $name(t, x, p, r=()):
+    """$doc"""
+$body
+''')
+
+CHOLESKY_SOLVE = '''
+
+def _cholesky_solve(M, F):
+    """Solve M u = F for symmetric positive definite M, overwriting F with u.
+
+    Only the lower triangle of M is read (its rows may stop at the
+    diagonal); M = L L^T is factored in place, L over that triangle. Raises
+    numpy.linalg.LinAlgError when a pivot is not positive. Plain loops: for
+    the few rates of a mechanical system they beat NumPy's call overhead.
+    """
+    k = len(F)
+    for j in range(k):
+        Mj = M[j]
+        d = Mj[j]
+        for s in range(j):
+            d -= Mj[s] * Mj[s]
+        if not d > 0.0:
+            raise numpy.linalg.LinAlgError("the mass matrix is not positive definite")
+        d = math.sqrt(d)
+        Mj[j] = d
+        for i in range(j + 1, k):
+            Mi = M[i]
+            v = Mi[j]
+            for s in range(j):
+                v -= Mi[s] * Mj[s]
+            Mi[j] = v / d
+    for i in range(k):
+        v = F[i]
+        for s in range(i):
+            v -= M[i][s] * F[s]
+        F[i] = v / M[i][i]
+    for i in range(k - 1, -1, -1):
+        v = F[i]
+        for s in range(i + 1, k):
+            v -= M[s][i] * F[s]
+        F[i] = v / M[i][i]
+    return F
+'''
+
+DOCS = {
+    "mass_matrix": "The mass matrix M, shape ({k}, {k}), symmetric positive definite.",
+    "forcing": "The forcing F of M u' = F, shape ({k},).",
+    "rhs": "d(x)/dt = [q', u'] with M u' = F solved by Cholesky, shape ({nx},).",
+}
+
+
+def emit_python(derivation: Derivation) -> dict[str, str]:
+    """The Python module of a derivation, as ``{"<name>.py": text}``.
+
+    Raises:
+        EmitError: when an expression has no Python rendering.
+    """
+    lay = layout(derivation)
+    functions = [
+        _mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay), CHOLESKY_SOLVE,
+    ]
+    text = MODULE.substitute(
+        header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
+        name=lay.system, k=lay.k, imports="import math\n\nimport numpy",
+        state=_tuple(lay.state), parameters=_tuple(lay.parameters), inputs=_tuple(lay.r),
+        defaults=_dict(lay.defaults), functions="".join(functions),
+    )
+    return {f"{lay.system}.py": text}
+
+
+# -- the three functions ----------------------------------------------------------
+
+def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, mass_matrix_equations(derivation))
+    rows = _rows(block.results, lay.k)
+    body = [*_prologue(lay, block), "return numpy.array([", *_items(rows, 1), "], dtype=float)"]
+    return _function("mass_matrix", lay, body)
+
+
+def _forcing(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, forcing_equations(derivation))
+    body = [*_prologue(lay, block), "return numpy.array([", *_items(block.results, 1), "], dtype=float)"]
+    return _function("forcing", lay, body)
+
+
+def _rhs(derivation: Derivation, lay: Layout) -> str:
+    lower = lower_mass_matrix_equations(derivation)
+    block = _block(lay, kinematic_equations(derivation) + lower + forcing_equations(derivation))
+    n, m = lay.n, len(lower)
+    qdot, mass, force = block.results[:n], block.results[n:n + m], block.results[n + m:]
+    body = [
+        *_prologue(lay, block),
+        "M = [  # the lower triangle: all that _cholesky_solve reads",
+        *_items(_lower_rows(mass, lay.k), 1), "]",
+        "F = [", *_items(force, 1), "]",
+        "return numpy.array([", *_items([*qdot, "*_cholesky_solve(M, F)"], 1), "], dtype=float)",
+    ]
+    return _function("rhs", lay, body)
+
+
+# -- pieces of code ------------------------------------------------------------
+
+def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:
+    block, printer = print_block(GacliPythonPrinter, lay.identifiers, equations)
+    printer.imports()  # raises if the code would need more than math and numpy
+    return block
+
+
+def _prologue(lay: Layout, block: Block) -> list[str]:
+    """Unpack the vectors the block reads, then its temporaries."""
+    lines = []
+    if block.symbols & set(lay.r_symbols):
+        lines += ["if callable(r):", f"{INDENT}r = r(t, x)"]
+    for vector, entries in (("x", lay.state_entries), ("p", lay.parameter_entries), ("r", lay.r_entries)):
+        if block.symbols & {e.symbol for e in entries}:
+            lines.append(f"{_targets([e.identifier for e in entries])} = map(float, {vector})")
+    return lines + [f"{name} = {code}" for name, code in block.temporaries]
+
+
+def _function(name: str, lay: Layout, body: Sequence[str]) -> str:
+    doc = DOCS[name].format(k=lay.k, nx=len(lay.state))
+    return FUNCTION.substitute(name=name, doc=doc, body="\n".join(INDENT + line for line in body))
+
+
+def _rows(results: Sequence[str], k: int) -> list[str]:
+    return ["[" + ", ".join(results[i * k:(i + 1) * k]) + "]" for i in range(k)]
+
+
+def _lower_rows(results: Sequence[str], k: int) -> list[str]:
+    starts = [i * (i + 1) // 2 for i in range(k + 1)]
+    return ["[" + ", ".join(results[starts[i]:starts[i + 1]]) + "]" for i in range(k)]
+
+
+def _items(codes: Sequence[str], depth: int) -> list[str]:
+    return [INDENT * depth + code + "," for code in codes]
+
+
+def _targets(names: Sequence[str]) -> str:
+    return f"[{names[0]}]" if len(names) == 1 else ", ".join(names)
+
+
+def _tuple(names: Sequence[str]) -> str:
+    items = [json.dumps(n) for n in names]
+    return f"({items[0]},)" if len(items) == 1 else "(" + ", ".join(items) + ")"
+
+
+def _dict(values: dict[str, float]) -> str:
+    return "{" + ", ".join(f"{json.dumps(n)}: {v!r}" for n, v in values.items()) + "}"

@@ -1,0 +1,179 @@
+"""The generated C: strict compilation with gcc and clang, the header, rhs's return code.
+
+The helpers here (``compile_c``, ``CLibrary``) are also used by
+test_generated_numeric.py. C tests skip when the compiler is missing.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import SYSTEMS, derived
+from gacli.emit.c import emit_c
+from gacli.emit.naming import layout
+from test_emit_python import EXTRA, extra
+
+ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
+COMPILERS = ("gcc", "clang")
+STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+
+_DOUBLES = ctypes.POINTER(ctypes.c_double)
+
+
+def need(compiler: str) -> str:
+    path = shutil.which(compiler)
+    if path is None:
+        pytest.skip(f"{compiler} is not installed")
+    return path
+
+
+def write_c(derivation, directory):
+    directory.mkdir(parents=True, exist_ok=True)
+    for name, text in emit_c(derivation).items():
+        (directory / name).write_text(text, encoding="utf-8")
+    return directory / f"{derivation.system.name}.c"
+
+
+def compile_c(derivation, directory, compiler="gcc"):
+    """Write the C files under ``directory`` and build a shared library with the strict flags."""
+    source = write_c(derivation, directory)
+    library = directory / f"lib{derivation.system.name}_{compiler}.so"
+    command = [need(compiler), *STRICT, "-O2", "-shared", "-fPIC", str(source), "-o", str(library), "-lm"]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0 and not result.stderr, result.stderr
+    return library
+
+
+class CLibrary:
+    """ctypes access to <name>_mass_matrix, _forcing and _rhs."""
+
+    def __init__(self, path, derivation):
+        self.lib = ctypes.CDLL(str(path))
+        self.name, self.k = derivation.system.name, derivation.k
+        for suffix, restype in (("mass_matrix", None), ("forcing", None), ("rhs", ctypes.c_int)):
+            function = getattr(self.lib, f"{self.name}_{suffix}")
+            function.argtypes = [ctypes.c_double, _DOUBLES, _DOUBLES, _DOUBLES, _DOUBLES]
+            function.restype = restype
+
+    def _call(self, suffix, size, t, x, p, r):
+        out = np.full(size, np.nan)
+        arrays = [np.ascontiguousarray(v, dtype=float) for v in (x, p)]
+        r_array = np.ascontiguousarray(r, dtype=float) if len(r) else None
+        status = getattr(self.lib, f"{self.name}_{suffix}")(
+            t, *(_pointer(a) for a in arrays), _pointer(r_array), _pointer(out))
+        return out, status
+
+    def mass_matrix(self, t, x, p, r=()):
+        return self._call("mass_matrix", self.k * self.k, t, x, p, r)[0].reshape(self.k, self.k)
+
+    def forcing(self, t, x, p, r=()):
+        return self._call("forcing", self.k, t, x, p, r)[0]
+
+    def rhs(self, t, x, p, r=()):
+        """(xdot, status)."""
+        return self._call("rhs", len(x), t, x, p, r)
+
+
+def _pointer(array):
+    return None if array is None else array.ctypes.data_as(_DOUBLES)
+
+
+# -- compilation ---------------------------------------------------------------------
+
+@pytest.mark.parametrize("compiler", COMPILERS)
+@pytest.mark.parametrize("name", ALL)
+def test_compiles_cleanly_under_strict_flags(name, compiler, tmp_path):
+    compile_c(derived(name), tmp_path, compiler)
+
+
+@pytest.mark.parametrize("compiler", COMPILERS)
+@pytest.mark.parametrize("name", sorted(EXTRA))
+def test_the_tests_own_systems_compile(name, compiler, tmp_path):
+    compile_c(extra(name), tmp_path, compiler)
+
+
+@pytest.mark.parametrize("compiler", ["g++", "clang++"])
+def test_header_is_usable_from_cpp(compiler, tmp_path):
+    write_c(derived("sphere_on_turntable"), tmp_path)
+    user = tmp_path / "user.cpp"
+    user.write_text('#include "sphere_on_turntable.h"\n'
+                    "int main() { double x[SPHERE_ON_TURNTABLE_NX] = {0}; (void)x; return 0; }\n")
+    result = subprocess.run([need(compiler), "-std=c++11", "-Wall", "-Wextra", "-Werror", "-pedantic",
+                             "-fsyntax-only", str(user)], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+
+
+# -- the files -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ALL)
+def test_header_defines_sizes_and_one_index_per_entry(name):
+    d = derived(name)
+    lay = layout(d)
+    header = emit_c(d)[f"{name}.h"]
+    defines = dict(re.findall(r"^#define (\w+) +(\d+)", header, flags=re.M))
+    prefix = name.upper()
+    assert defines[f"{prefix}_NX"] == str(len(lay.state))
+    assert defines[f"{prefix}_NU"] == str(d.k)
+    assert defines[f"{prefix}_NP"] == str(len(lay.parameters))
+    assert defines[f"{prefix}_NR"] == str(len(lay.r))
+    for entry in lay.entries:
+        assert defines[entry.macro] == str(entry.index)
+    assert len(defines) == 4 + len(lay.entries)
+    assert header.count(f"#ifndef {prefix}_H") == 1 and 'extern "C"' in header
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_source_uses_only_math_h_and_no_globals(name):
+    source = emit_c(derived(name))[f"{name}.c"]
+    assert re.findall(r"#include .*", source) == ["#include <math.h>", f'#include "{name}.h"']
+    assert not re.search(r"\b(malloc|calloc|free|M_PI|M_E)\b", source)
+    top_level = [line for line in source.splitlines() if line and not line[0].isspace()]
+    allowed = ("/*", "#include", "{", "}", f"void {name}_", f"int {name}_", f"static int {name}_cholesky_solve(")
+    assert all(line.startswith(allowed) for line in top_level), top_level
+
+
+# -- rhs's return code -------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def library(tmp_path_factory):
+    cache = {}
+
+    def get(name, compiler="gcc"):
+        if (name, compiler) not in cache:
+            d = derived(name)
+            path = compile_c(d, tmp_path_factory.mktemp(f"{name}_{compiler}"), compiler)
+            cache[name, compiler] = CLibrary(path, d)
+        return cache[name, compiler]
+
+    return get
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_rhs_returns_nonzero_when_mass_matrix_is_not_positive_definite(name, library, rng):
+    lib, lay = library(name), layout(derived(name))
+    x = rng.uniform(0.3, 1.7, len(lay.state))
+    p, r = rng.uniform(0.3, 1.7, len(lay.parameters)), rng.uniform(0.3, 1.7, len(lay.r))
+    assert lib.rhs(0.2, x, p, r)[1] == 0
+    assert lib.rhs(0.2, x, -p, r)[1] != 0  # every mass and moment negative: M < 0
+
+
+def test_rhs_returns_the_number_of_the_failing_pivot(library):
+    lib = library("rigid_body")
+    x, r = np.full(9, 0.5), np.zeros(6)
+    assert lib.rhs(0.0, x, [2.0, 1.0, 2.0, 3.0], r)[1] == 0
+    assert lib.rhs(0.0, x, [2.0, 1.0, 0.0, 3.0], r)[1] == 5  # I_y: pivot 5 of 6
+    assert lib.rhs(0.0, x, [-2.0, 1.0, 2.0, 3.0], r)[1] == 1
+    assert lib.rhs(0.0, x, [2.0, 1.0, 2.0, np.nan], r)[1] == 6
+
+
+def test_r_may_be_null_without_inputs(library):
+    lib = library("cylinder_in_cylinder")
+    xdot, status = lib.rhs(0.0, [0.3, 0.0, 1.0], [1.0, 9.81, 0.1, 0.5, 0.4], ())
+    assert status == 0
+    np.testing.assert_allclose(xdot, [1.0, 4.0, -9.81 * np.sin(0.3) / (1.5 * 0.4)], rtol=1e-14)
