@@ -31,6 +31,9 @@ app = typer.Typer(
 # import the emitters; tests check the two lists agree.
 FORMATS = ("text", "latex", "python", "c")
 Format = enum.Enum("Format", {name: name for name in FORMATS}, type=str)
+# Likewise gacli.simulate.METHODS, without importing SciPy.
+METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+Method = enum.Enum("Method", {m: m for m in METHODS}, type=str)
 
 SystemPath = Annotated[Path, typer.Argument(help="A system file (YAML).", dir_okay=False, exists=True)]
 
@@ -134,6 +137,109 @@ def gibbs(file: SystemPath) -> None:
     with _boundary():
         derivation = _derive(file)
         console.sections("", gibbs_report(derivation))
+
+
+CHECK_FORMATS = ("text", "json", "github")
+CheckFormat = enum.Enum("CheckFormat", {name: name for name in CHECK_FORMATS}, type=str)
+
+
+@app.command()
+def check(
+    paths: Annotated[
+        list[str],
+        typer.Argument(metavar="PATH", help="Files, directories (searched for *.yaml, *.yml) or glob patterns."),
+    ],
+    format: Annotated[
+        CheckFormat, typer.Option("--format", "-f", help="text: a table; json: for machines; github: annotations.")
+    ] = CheckFormat.text,
+    strict: Annotated[bool, typer.Option("--strict", help="Warnings fail too.")] = False,
+    timeout: Annotated[
+        float, typer.Option("--timeout", min=0, help="Seconds allowed per file (0: no limit).")
+    ] = 60.0,
+) -> None:
+    """Check system files: format, expressions, ranks, derivation and the sanity of M.
+
+    Also says which constraints are holonomic and which quasi-coordinates are
+    true coordinates. Exit 0 when every file passes, 1 when one has errors
+    (or warnings, with --strict), 2 for a usage error.
+
+    Example: gacli check systems/ --strict --format github
+    """
+    from gacli.check import PathsError, check_paths, to_github, to_json
+
+    with _boundary():
+        try:
+            if format.value == "text":
+                from gacli import check_console, console
+
+                with console.progress("checking") as step:
+                    report = check_paths(paths, timeout=timeout, strict=strict, on_file=lambda p: step(str(p)))
+                check_console.show(report)
+            else:
+                report = check_paths(paths, timeout=timeout, strict=strict)
+                typer.echo(to_json(report) if format.value == "json" else to_github(report), nl=False)
+        except PathsError as exc:
+            raise typer.BadParameter(str(exc), param_hint="PATH") from None
+    raise typer.Exit(code=report.exit_code)
+
+
+@app.command()
+def schema() -> None:
+    """Print the JSON Schema (draft 2020-12) of the system file format.
+
+    Example: gacli schema > schema/gacli-system-1.schema.json
+    """
+    from gacli.file_schema import schema_text
+
+    typer.echo(schema_text(), nl=False)
+
+
+@app.command()
+def simulate(
+    file: SystemPath,
+    set_: Annotated[Optional[list[str]], typer.Option("--set", help='Parameter values, "M=1,a=0.1".')] = None,
+    init: Annotated[Optional[list[str]], typer.Option(help="Initial state by STATE name; others start at 0.")] = None,
+    input: Annotated[Optional[list[str]], typer.Option(help="Inputs as expressions in t, parameters, state.")] = None,
+    function: Annotated[Optional[list[str]], typer.Option(help='Free functions of time, "Omega=2+sin(t)".')] = None,
+    t_end: Annotated[float, typer.Option(help="End time.")] = 10.0,
+    method: Annotated[Method, typer.Option(help="solve_ivp method.")] = Method.DOP853,
+    rtol: Annotated[float, typer.Option(help="Relative tolerance.")] = 1e-9,
+    atol: Annotated[float, typer.Option(help="Absolute tolerance.")] = 1e-12,
+    points: Annotated[int, typer.Option(help="Evenly spaced output samples.")] = 1001,
+    csv: Annotated[Optional[Path], typer.Option(help="Write t and the state to this CSV file.")] = None,
+    plot: Annotated[Optional[Path], typer.Option(help="Draw to this .png or .svg file.")] = None,
+    show: Annotated[Optional[str], typer.Option(help="States drawn against time, as x,y.")] = None,
+    phase: Annotated[Optional[str], typer.Option(help="One state against another, as x,y.")] = None,
+) -> None:
+    """Integrate the equations of motion; report energy drift and constraint residuals.
+
+    Example: gacli simulate systems/sphere_on_turntable.yaml --function "Omega=2" --input "F_x=0,F_y=0,F_z=0,M_x=0,M_y=0,M_z=0" --init "dot(x)=0.1" --t-end 5
+    """
+    from gacli import simulate as sim
+    from gacli import simulate_console
+
+    with _boundary():
+        spec = sim.spec_from_options(set=set_ or (), init=init or (), input=input or (), function=function or (),
+                                     show=show, phase=phase, t_end=t_end, method=method.value,
+                                     rtol=rtol, atol=atol, points=points)
+        sim.require("scipy.integrate")
+        if plot is not None:
+            from gacli.simulate_plot import check
+
+            check(plot)
+        derivation = _derive(file)
+        with simulate_console.progress(spec.t_end) as advance:
+            result = sim.simulate(derivation, spec, progress=advance)
+        if csv is not None:
+            from gacli.output import write_files
+
+            for path in write_files({csv.name: sim.to_csv(result)}, csv):
+                simulate_console.wrote(path)
+        if plot is not None:
+            from gacli.simulate_plot import plot as draw
+
+            simulate_console.wrote(draw(result, plot, spec.show, spec.phase))
+        simulate_console.summary(result)
 
 
 def main() -> None:

@@ -1,0 +1,200 @@
+"""The JSON Schema (draft 2020-12) of the system file format, for editors.
+
+Editors that run the YAML language server validate a file as it is typed
+once it starts with ``# yaml-language-server: $schema=<path or URL>``. The
+schema checks shape only (keys, lists, names, which strings may be
+expressions); gacli itself checks everything else. It follows the reader in
+:mod:`gacli.schema` (the tests hold its key lists to that module's, so the
+two cannot drift apart), and the shipped copy
+``schema/gacli-system-1.schema.json`` is tested to equal :func:`schema_text`.
+No SymPy is imported here.
+"""
+
+from __future__ import annotations
+
+import json
+
+from gacli.expr.grammar import MAX_LENGTH
+from gacli.schema import FORMAT_VERSION
+
+SCHEMA_FILE = f"gacli-system-{FORMAT_VERSION}.schema.json"
+DIALECT = "https://json-schema.org/draft/2020-12/schema"
+
+NAME_PATTERN = "^[A-Za-z_][A-Za-z0-9_]*$"
+# The characters of the expression grammar, and at least one operand.
+_CHARACTERS = r"\sA-Za-z0-9_.+\-*/(),"
+EXPRESSION_PATTERN = rf"^[{_CHARACTERS}]*[A-Za-z0-9_.)][{_CHARACTERS}]*$"
+CONSTRAINT_PATTERN = rf"^[{_CHARACTERS}]*(=[{_CHARACTERS}]*)?$"
+AXES = ["x", "y", "z", "X", "Y", "Z"]
+
+
+def _ref(name: str) -> dict:
+    return {"$ref": f"#/$defs/{name}"}
+
+
+def _text() -> dict:
+    return {"type": "string"}
+
+
+def _closed(properties: dict, required: tuple[str, ...] = (), **extra) -> dict:
+    """An object with exactly these keys."""
+    out: dict = {"type": "object", "properties": properties, "additionalProperties": False}
+    if required:
+        out["required"] = list(required)
+    out.update(extra)
+    return out
+
+
+def _list(sizes: tuple[int, ...], item: dict | None = None) -> dict:
+    """A list of one of these lengths (the reader's ``sizes``)."""
+    if list(sizes) != list(range(min(sizes), max(sizes) + 1)):
+        return {"oneOf": [_list((n,), item) for n in sizes]}
+    return {"type": "array", "items": item or _ref("expression"), "minItems": min(sizes), "maxItems": max(sizes)}
+
+
+def _either(*choices: dict, description: str = "") -> dict:
+    out: dict = {"description": description} if description else {}
+    out["oneOf"] = list(choices)
+    return out
+
+
+def _symbol_section(entry: str, description: str) -> dict:
+    """A list of names, or a mapping from name to an entry (or nothing)."""
+    return _either({"type": "null"}, {"type": "array", "items": _ref("name"), "uniqueItems": True},
+                   {"type": "object", "propertyNames": _ref("name"), "additionalProperties": _ref(entry)},
+                   description=description)
+
+
+def _symbol_entry(with_value: bool) -> dict:
+    properties = {"description": _text(), "unit": _text(), "latex": _text()}
+    if with_value:
+        properties["value"] = _ref("expression")
+    return _either({"type": "null"}, {"type": ["string", "number"], "description": "a description"},
+                   _closed(properties))
+
+
+def _vector(sizes: tuple[int, ...]) -> dict:
+    return _either(_list(sizes), _ref("vector_in_frames"))
+
+
+def _definitions() -> dict:
+    return {
+        "name": {"type": "string", "pattern": NAME_PATTERN, "description": "an identifier"},
+        "expression": _either(
+            {"type": "number"},
+            {"type": "string", "maxLength": MAX_LENGTH, "pattern": EXPRESSION_PATTERN},
+            description="an expression: numbers, declared names, t, pi, + - * / **, sin cos tan asin acos "
+                        "atan atan2 sinh cosh tanh exp log sqrt abs sign, dot(x), ddot(x), differentials dx, dt"),
+        "constraint": _either(
+            {"type": "number"},
+            {"type": "string", "maxLength": MAX_LENGTH, "pattern": CONSTRAINT_PATTERN},
+            _closed({"velocity_of": _ref("name"), "along": _vector((2, 3)), "description": _text()},
+                    ("velocity_of", "along"), description="a knife edge: the point's velocity has no "
+                                                          "component along the vector"),
+            description="a Pfaffian constraint 'lhs = rhs' (or one expression, meaning '= 0')"),
+        "vector_in_frames": {
+            "type": "object", "minProperties": 1, "propertyNames": _ref("name"),
+            "properties": {"from": _ref("name")}, "additionalProperties": _list((3,)),
+            "description": "components in one or more frames, summed ({N: [x, y, z], B: [...]}), "
+                           "plus the position of the point 'from'"},
+        "parameter": _symbol_entry(True),
+        "function": _symbol_entry(True),
+        "plain_symbol": _symbol_entry(False),
+        "quasi_coordinate": _either(
+            {"type": "null"}, _ref("expression"),
+            _closed({"description": _text(), "differential": _ref("expression"), "unit": _text(),
+                     "latex": _text()}),
+            description="its differential (a string), or a mapping; nothing: a primitive quasi-coordinate"),
+        "frame": _frame(),
+        "body": _body(),
+        "rolling": _closed({"body": _ref("name"), "radius": _ref("expression"), "axle": _vector((3,)),
+                            "on": _ref("name"), "description": _text()}, ("body", "radius")),
+        "load": _load(),
+    }
+
+
+def _frame() -> dict:
+    pair = {"type": "array", "prefixItems": [{"enum": AXES}, _ref("expression")], "items": False,
+            "minItems": 2, "description": "[axis, angle], as [z, psi]"}
+    properties = {
+        "parent": _ref("name"),
+        "rotations": {"type": "array", "items": pair, "minItems": 1},
+        "sequence": {"type": "string", "pattern": "^[XYZxyz]{1,3}$", "description": "as ZXZ"},
+        "angles": _list((1, 2, 3)),
+        "description": _text(),
+    }
+    return _closed(properties, oneOf=[{"required": ["rotations"]}, {"required": ["sequence", "angles"]}])
+
+
+def _body() -> dict:
+    matrix = {"type": "array", "items": _list((3,)), "minItems": 3, "maxItems": 3}
+    properties = {
+        "mass": _ref("expression"),
+        "position": _either(_ref("name"), _vector((2, 3)), description="a point's name, or a vector"),
+        "inertia": _either(_ref("expression"), _list((1, 3)), matrix,
+                           description="[Ix, Iy, Iz], a symmetric 3x3 matrix, or a scalar for plane motion"),
+        "rotation": _either(_ref("expression"), _list((1, 3)),
+                            description="the body-axis components of the rotation as differential forms "
+                                        "(one form for plane motion)"),
+        "frame": _ref("name"),
+        "description": _text(),
+    }
+    rigid = {
+        "inertia": {"anyOf": [{"required": ["rotation"]}, {"required": ["frame"]}]},
+        "rotation": {"required": ["inertia"], "not": {"required": ["frame"]}},
+        "frame": {"required": ["inertia"]},
+    }
+    return _closed(properties, ("mass", "position"), dependentSchemas=rigid)
+
+
+def _load() -> dict:
+    force = _closed({"force": _vector((2, 3)), "at": _either(_ref("name"), _vector((2, 3))),
+                     "description": _text()}, ("force", "at"))
+    torque = _closed({"torque": _either(_ref("expression"), _vector((1, 3))), "body": _ref("name"),
+                      "description": _text()}, ("torque", "body"))
+    return {"oneOf": [force, torque]}
+
+
+def _top_level() -> dict:
+    return {
+        "gacli": {"const": FORMAT_VERSION, "description": "the format version"},
+        "name": _ref("name"),
+        "title": _text(),
+        "description": _text(),
+        "source": {"type": "string", "description": "where the system comes from (a book, a paper)"},
+        "parameters": _symbol_section("parameter", "constant symbols"),
+        "functions": _symbol_section("function", "prescribed functions of time"),
+        "inputs": _symbol_section("plain_symbol", "external loads or controls (functions of time)"),
+        "coordinates": _symbol_section("plain_symbol", "generalized coordinates"),
+        "quasi_coordinates": _symbol_section("quasi_coordinate", "quasi-coordinates, by their differentials"),
+        "constraints": {"oneOf": [{"type": "null"}, {"type": "array", "items": _ref("constraint")}]},
+        "independent": {"type": "array", "items": _ref("name"), "uniqueItems": True},
+        "frames": {"type": "object", "propertyNames": _ref("name"), "additionalProperties": _ref("frame")},
+        "points": {"type": "object", "propertyNames": _ref("name"), "additionalProperties": _vector((2, 3))},
+        "bodies": {"type": "object", "minProperties": 1, "propertyNames": _ref("name"),
+                   "additionalProperties": _ref("body")},
+        "rolling": {"type": "array", "items": _ref("rolling")},
+        "loads": {"oneOf": [{"type": "null"}, {"type": "array", "items": _ref("load")}]},
+        "work": _ref("expression"),
+        "potential": _ref("expression"),
+    }
+
+
+def build_schema() -> dict:
+    """The schema as a dict (keys in the order of the format's documentation)."""
+    return {
+        "$schema": DIALECT,
+        "title": f"gacli system file (format {FORMAT_VERSION})",
+        "description": "A mechanical system for gacli, which derives its equations of motion by the "
+                       "Gibbs-Appell method. Generated by 'gacli schema'.",
+        "type": "object",
+        "required": ["gacli", "name", "coordinates", "bodies"],
+        "additionalProperties": False,
+        "properties": _top_level(),
+        "$defs": _definitions(),
+    }
+
+
+def schema_text() -> str:
+    """The schema as ``gacli schema`` prints it (and as the repository ships it)."""
+    return json.dumps(build_schema(), indent=2, ensure_ascii=True) + "\n"

@@ -1,0 +1,385 @@
+"""``gacli check``: exit codes, formats, warnings, the time budget, and mutated system files."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import pytest
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from gacli.check import (
+    STEP_CLASSIFY, STEP_LOAD, STEP_MASS, STEP_READ, CheckReport, FileReport, PathsError,
+    check_file, check_paths, expand_paths, printable, to_github, to_json,
+)
+from gacli.cli import app
+from gacli.equations import derive
+from gacli.errors import Diagnostic, Location
+from gacli.loading import load
+
+ROOT = Path(__file__).resolve().parent.parent
+SYSTEMS = ROOT / "systems"
+
+GOOD = """\
+gacli: 1
+name: pendulum
+parameters:
+  m: {value: 1}
+  l: {value: 2}
+  g: {value: 9.81}
+coordinates: [theta]
+bodies:
+  bob: {mass: m, position: [l*sin(theta), -l*cos(theta)]}
+potential: -m*g*l*cos(theta)
+"""
+
+
+def invoke(*args: str):
+    return CliRunner().invoke(app, ["check", *args])
+
+
+def write(folder: Path, name: str, text: str) -> Path:
+    path = folder / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+# -- exit codes ------------------------------------------------------------------------
+
+def test_the_shipped_systems_pass():
+    result = invoke(str(SYSTEMS))
+    assert result.exit_code == 0, result.output
+    shipped = sorted(SYSTEMS.glob("*.yaml"))
+    for path in shipped:
+        assert path.name in result.stdout
+    assert f"all {len(shipped)} files passed" in result.stdout
+    assert "Traceback" not in result.output
+
+
+def test_a_good_file_passes(tmp_path):
+    result = invoke(str(write(tmp_path, "good.yaml", GOOD)))
+    assert result.exit_code == 0, result.output
+    assert result.stderr == ""
+
+
+@pytest.mark.parametrize("args", [["no/such/file.yaml"], ["nothing-*.yaml"], [], ["--bogus", "x.yaml"],
+                                  ["--format", "xml", "x.yaml"], ["--timeout", "-1", "x.yaml"]])
+def test_usage_errors_exit_2(args, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = invoke(*args)
+    assert result.exit_code == 2, result.output
+    assert "Traceback" not in result.output
+
+
+def test_a_missing_path_is_named(tmp_path):
+    good = write(tmp_path, "good.yaml", GOOD)
+    result = invoke(str(good), str(tmp_path / "missing.yaml"))
+    assert result.exit_code == 2
+    assert "missing.yaml" in result.output
+
+
+def test_a_folder_without_system_files_is_a_usage_error(tmp_path):
+    write(tmp_path, "notes.txt", "hello")
+    result = invoke(str(tmp_path))
+    assert result.exit_code == 2, result.output
+    assert "no system files" in result.output
+
+
+# -- many files, each format ---------------------------------------------------------------
+
+@pytest.fixture
+def mixed(tmp_path) -> tuple[Path, set[str]]:
+    """A folder of two good files and three bad ones (one nested, one .yml)."""
+    shutil.copy(SYSTEMS / "cylinder_in_cylinder.yaml", tmp_path / "a_good.yaml")
+    write(tmp_path, "sub/b_good.yml", GOOD)
+    bad = {
+        write(tmp_path, "c_bad.yaml", GOOD.replace("mass: m", "mass: mass")),
+        write(tmp_path, "sub/d_bad.yml", GOOD.replace("gacli: 1", "gacli: 7")),
+        write(tmp_path, "sub/deeper/e_bad.yaml", "- not\n- a mapping\n"),
+    }
+    write(tmp_path, ".hidden/f_bad.yaml", "- skipped: hidden folders are not searched\n")
+    write(tmp_path, "notes.txt", "not YAML at all")
+    return tmp_path, {str(p) for p in bad}
+
+
+def test_json_reports_exactly_the_bad_files(mixed):
+    folder, bad = mixed
+    result = invoke("--format", "json", str(folder))
+    assert result.exit_code == 1, result.output
+    report = json.loads(result.stdout)
+    assert report["exit_code"] == 1
+    assert {f["path"] for f in report["files"] if f["failed"]} == bad
+    assert len(report["files"]) == 5
+    assert report["summary"] == {"files": 5, "failed": 3, "errors": 3, "warnings": 0}
+    for file in report["files"]:
+        for d in file["diagnostics"]:
+            assert d["line"] >= 1 and d["column"] >= 1 and d["path"] == file["path"]
+
+
+def test_github_reports_exactly_the_bad_files(mixed):
+    folder, bad = mixed
+    result = invoke("--format", "github", str(folder))
+    assert result.exit_code == 1, result.output
+    lines = result.stdout.splitlines()
+    assert all(re.match(r"::(error|warning) file=[^,]+,line=\d+,col=\d+,title=gacli check::.+", line)
+               for line in lines), lines
+    assert {re.match(r"::error file=([^,]+),", line)[1] for line in lines} == bad
+
+
+def test_text_reports_bad_files_on_stderr_and_a_table_on_stdout(mixed):
+    folder, bad = mixed
+    result = invoke(str(folder))
+    assert result.exit_code == 1
+    assert {line.split(":")[0] for line in result.stderr.splitlines()} == bad
+    assert "3 of 5 files failed" in result.stdout
+    assert "holonomic" in result.stdout  # the cylinder's constraint
+
+
+def test_files_come_sorted_and_once(mixed):
+    folder, _ = mixed
+    paths = expand_paths([folder, folder / "c_bad.yaml", str(folder / "sub" / "*.yml")])
+    names = [p.relative_to(folder).as_posix() for p in paths]
+    assert names == ["a_good.yaml", "c_bad.yaml", "sub/b_good.yml", "sub/d_bad.yml", "sub/deeper/e_bad.yaml"]
+
+
+def test_a_symlink_out_of_the_folder_is_not_followed(tmp_path):
+    outside = write(tmp_path, "outside/secret.yaml", "password: hunter2\n")
+    write(tmp_path, "repo/good.yaml", GOOD)
+    (tmp_path / "repo" / "leak.yaml").symlink_to(outside)
+    assert [p.name for p in expand_paths([tmp_path / "repo"])] == ["good.yaml"]
+
+
+def test_paths_error_names_every_missing_pattern(tmp_path):
+    with pytest.raises(PathsError, match=r"^no such file, directory or match: .*/one\.yaml, .*/two-\*\.yml$"):
+        expand_paths([tmp_path / "one.yaml", str(tmp_path / "two-*.yml")])
+
+
+# -- warnings and --strict -----------------------------------------------------------------
+
+WARNED = GOOD.replace("  g: {value: 9.81}\n", "  g: {value: 9.81}\n  k: {value: 3}\ninputs: [F]\n").replace(
+    "coordinates: [theta]", "coordinates: [theta, s]\nconstraints: [ds = l*dtheta]")
+
+
+def test_warnings_are_shown_and_pass_without_strict(tmp_path):
+    path = write(tmp_path, "warned.yaml", WARNED)
+    result = invoke(str(path))
+    assert result.exit_code == 0, result.output
+    warnings = [line for line in result.stderr.splitlines() if ": warning: " in line]
+    assert len(warnings) == 3, result.stderr
+    assert "parameter 'k' is not used" in result.stderr
+    assert "input 'F' is declared but no load uses it" in result.stderr
+    assert "no body depends on coordinate 's'" in result.stderr
+
+
+def test_strict_turns_a_warning_into_a_failure(tmp_path):
+    path = write(tmp_path, "warned.yaml", WARNED)
+    result = invoke("--strict", "--format", "json", str(path))
+    assert result.exit_code == 1, result.output
+    assert json.loads(result.stdout)["files"][0]["status"] == "warning"
+    assert invoke("--strict", str(write(tmp_path, "good.yaml", GOOD))).exit_code == 0
+
+
+def test_github_warnings_are_warning_annotations(tmp_path):
+    path = write(tmp_path, "warned.yaml", WARNED)
+    result = invoke("--format", "github", str(path))
+    assert result.exit_code == 0
+    assert all(line.startswith("::warning ") for line in result.stdout.splitlines())
+
+
+# -- sanity of M ----------------------------------------------------------------------------------
+
+def test_a_massless_particle_fails_positive_definiteness(tmp_path):
+    path = write(tmp_path, "massless.yaml", GOOD.replace("m: {value: 1}", "m: {value: 0}"))
+    report = check_file(path)
+    assert report.mass_matrix.positive_definite is False
+    assert "M is not positive definite at the sample state theta=" in report.errors[0].message
+
+
+def test_positive_definiteness_needs_every_parameter_value(tmp_path):
+    path = write(tmp_path, "symbolic.yaml", GOOD.replace("m: {value: 1}", "m: mass of the bob"))
+    report = check_file(path)
+    assert report.errors == ()
+    assert report.mass_matrix.positive_definite is None
+    assert report.mass_matrix.note == "not checked: no value for m"
+    assert report.mass_matrix.symmetric is True
+
+
+def test_the_shipped_systems_have_symmetric_positive_definite_M():
+    for path in sorted(SYSTEMS.glob("*.yaml")):
+        report = check_file(path)
+        assert report.errors == (), report.errors
+        assert report.mass_matrix.symmetric is True
+        assert report.mass_matrix.positive_definite is True, path.name
+        assert report.mass_matrix.samples == 3
+
+
+def test_an_undefined_value_in_the_equations_is_an_error(tmp_path):
+    path = write(tmp_path, "log0.yaml", GOOD.replace("potential: -m*g*l*cos(theta)", "potential: theta*log(0)"))
+    report = check_file(path)
+    assert any("undefined value" in d.message for d in report.errors), report.diagnostics
+
+
+# -- the time budget ------------------------------------------------------------------------
+
+def test_a_tiny_timeout_names_the_step():
+    result = invoke("--timeout", "0.001", str(SYSTEMS / "sphere_on_turntable.yaml"))
+    assert result.exit_code == 1, result.output
+    assert "Traceback" not in result.output
+    message = re.search(r"sphere_on_turntable\.yaml:1:1: error: ran out of time in the step '([^']+)'",
+                        result.stderr)
+    assert message, result.stderr
+    steps = [STEP_READ, STEP_LOAD, STEP_CLASSIFY, STEP_MASS]
+    derive(load(SYSTEMS / "sphere_on_turntable.yaml"), progress=steps.append)
+    assert message[1] in steps, message[1]
+
+
+def test_the_budget_restores_the_previous_handler_and_timer():
+    fired = []
+    previous = signal.signal(signal.SIGALRM, lambda *a: fired.append(1))
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 100)
+        check_file(SYSTEMS / "cylinder_in_cylinder.yaml", timeout=30)
+        handler = signal.getsignal(signal.SIGALRM)
+        remaining, _ = signal.getitimer(signal.ITIMER_REAL)
+        assert handler is not None and handler.__name__ == "<lambda>"
+        assert 0 < remaining <= 100
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert fired == []
+
+
+def test_no_budget_outside_the_main_thread():
+    reports = []
+    thread = threading.Thread(target=lambda: reports.append(check_file(SYSTEMS / "rigid_body.yaml", timeout=0.001)))
+    thread.start()
+    thread.join()
+    assert reports[0].errors == ()
+
+
+def test_a_crash_is_reported_as_an_internal_error(tmp_path, monkeypatch):
+    def broken(*args, **kwargs):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setattr("gacli.check.derive", broken)
+    result = invoke(str(write(tmp_path, "good.yaml", GOOD)))
+    assert result.exit_code == 1
+    assert "good.yaml:1:1: error: internal error in the step" in result.stderr
+    assert "ZeroDivisionError: boom" in result.stderr
+    assert "Traceback" not in result.output
+
+
+# -- renderers ---------------------------------------------------------------------------------
+
+def _report() -> CheckReport:
+    where = Location("we,ird:name.yaml", 3, 7)
+    diagnostic = Diagnostic(where, "100% wrong\nsecond line \x1b[2J", "bodies.b", "a hint")
+    return CheckReport((FileReport("we,ird:name.yaml", (diagnostic,), elapsed=0.5),), strict=False)
+
+
+def test_github_escapes_data_and_properties():
+    assert to_github(_report()) == (
+        "::error file=we%2Cird%3Aname.yaml,line=3,col=7,title=gacli check::"
+        "bodies.b: 100%25 wrong%0Asecond line \\x1b[2J (a hint)\n")
+
+
+def test_json_is_stable_and_sorted():
+    text = to_json(_report())
+    assert text == to_json(_report())
+    data = json.loads(text)
+    assert list(data) == sorted(data)
+    assert data["files"][0]["diagnostics"][0]["message"] == "100% wrong\nsecond line \x1b[2J"
+
+
+def test_printable_escapes_control_characters():
+    assert printable("a\tb\x1bc\u202ed") == "a\\tb\\x1bc\\u202ed"
+    assert printable("θ = ω·t") == "θ = ω·t"
+
+
+def test_check_paths_reports_in_order(tmp_path):
+    b = write(tmp_path, "b.yaml", GOOD)
+    a = write(tmp_path, "a.yaml", "[")
+    report = check_paths([tmp_path], timeout=30)
+    assert [f.path for f in report.files] == [str(a), str(b)]
+    assert report.exit_code == 1 and report.failed == (report.files[0],)
+
+
+def test_help_does_not_import_sympy():
+    code = ("import sys\nfrom typer.testing import CliRunner\nfrom gacli.cli import app\n"
+            "r = CliRunner().invoke(app, ['check', '--help'])\nassert r.exit_code == 0, r.output\n"
+            "assert 'Example: gacli check' in r.output, r.output\nprint('sympy' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert done.stdout.strip() == "False", done.stderr
+
+
+def test_the_pre_commit_hook():
+    hooks = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))
+    hook = next(h for h in hooks if h["id"] == "gacli-check")
+    assert hook["entry"] == "gacli check"
+    assert re.search(hook["files"], "systems/top.yaml") and re.search(hook["files"], "a.yml")
+    assert not re.search(hook["files"], "notes.txt")
+
+
+# -- mutated system files (Hypothesis) ----------------------------------------------------------
+
+SOURCES = {p.name: p.read_text(encoding="utf-8") for p in sorted(SYSTEMS.glob("*.yaml"))}
+TOKENS = ["x", "dx", "dt", "t", "0", "1e999", "2**2**99", "__import__", "!!python/name:os.system", "&a", "*a",
+          "{", "}", "[", "]", ":", "- ", "'", '"', "|", ">", "#", "%", "=", "dot(x)", "ddot(q)", "null", "~",
+          "on", "sin(", ")", "\t", "\n", "\\", "\x00", "\u2212", "\x1b"]
+
+
+@st.composite
+def mutated(draw) -> str:
+    text = SOURCES[draw(st.sampled_from(sorted(SOURCES)))]
+    for _ in range(draw(st.integers(1, 3))):
+        lines = text.splitlines(keepends=True)
+        if not lines:
+            break
+        i, j = draw(st.integers(0, len(lines) - 1)), draw(st.integers(0, len(lines) - 1))
+        kind = draw(st.sampled_from(["delete", "duplicate", "swap", "insert", "token", "truncate"]))
+        if kind == "delete":
+            del lines[i]
+        elif kind == "duplicate":
+            lines.insert(j, lines[i])
+        elif kind == "swap":
+            lines[i], lines[j] = lines[j], lines[i]
+        text = "".join(lines)
+        position = draw(st.integers(0, len(text)))
+        if kind == "insert":
+            text = text[:position] + draw(st.text(min_size=1, max_size=4)) + text[position:]
+        elif kind == "token":
+            words = list(re.finditer(r"[A-Za-z_][A-Za-z0-9_]*|\d+|\S", text))
+            if not words:
+                continue
+            word = words[draw(st.integers(0, len(words) - 1))]
+            text = text[:word.start()] + draw(st.sampled_from(TOKENS)) + text[word.end():]
+        elif kind == "truncate":
+            text = text[:position]
+    return text
+
+
+@pytest.fixture(scope="module")
+def scratch(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("mutated") / "system.yaml"
+
+
+@settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(text=mutated())
+def test_a_mutated_system_file_never_crashes(text, scratch):
+    scratch.write_text(text, encoding="utf-8", errors="surrogatepass")
+    result = invoke("--timeout", "10", str(scratch))
+    assert "Traceback" not in result.output
+    assert "internal error" not in result.output, result.output
+    assert result.exit_code in (0, 1), result.output
+    if result.exit_code == 1:
+        assert re.search(rf"^{re.escape(str(scratch))}:\d+:\d+: error: ", result.stderr, re.MULTILINE), result.output
