@@ -31,24 +31,29 @@ def stderr() -> Console:
     return Console(stderr=True, highlight=False, width=_width(), soft_wrap=True)
 
 
+def printable(text: str) -> str:
+    """Control characters quoted from a file, shown escaped: a file must not drive the terminal."""
+    return "".join(c if c.isprintable() or c == " " else repr(c)[1:-1] for c in text)
+
+
 def diagnostics(items: Iterable[Diagnostic]) -> None:
     console = stderr()
     for d in items:
         line = Text()
-        line.append(str(d.location), style="bold")
+        line.append(printable(str(d.location)), style="bold")
         line.append(": ")
         line.append(f"{d.severity}:", style="bold red" if d.severity == "error" else "bold yellow")
-        line.append(f" {d.where}: " if d.where else " ")
-        line.append(d.message)
+        line.append(f" {printable(d.where)}: " if d.where else " ")
+        line.append(printable(d.message))
         if d.hint:
-            line.append(f" ({d.hint})", style="cyan")
+            line.append(f" ({printable(d.hint)})", style="cyan")
         console.print(line)
 
 
 def error(message: str) -> None:
     text = Text()
     text.append("error:", style="bold red")
-    text.append(f" {message}")
+    text.append(f" {printable(message)}")
     stderr().print(text)
 
 

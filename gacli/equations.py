@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
 from gacli.kinematics import BodyMotion, Rates, body_motions, solve_rates
@@ -118,7 +119,22 @@ def derive(system: System, *, progress: Callable[[str], None] | None = None) -> 
     >>> d.mass_matrix, d.forcing
     (Matrix([[m]]), Matrix([[-g*m]]))
     """
-    step = progress or (lambda name: None)
+    current = ["start"]
+
+    def step(name: str) -> None:
+        current[0] = name
+        if progress is not None:
+            progress(name)
+
+    try:
+        return _derive(system, step)
+    except (OverflowError, RecursionError) as exc:
+        # Extreme numbers (cosh(cosh(1e300))) overflow inside SymPy's evaluation.
+        raise DerivationError(f"{system.path}: the derivation failed at '{current[0]}': "
+                              f"a number is too large to evaluate ({type(exc).__name__})") from None
+
+
+def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     step("rates in terms of the independent rates (14.7)")
     rates = solve_rates(system)
     step("velocities and accelerations (14.14)")

@@ -132,11 +132,20 @@ def solve_rates(system: System) -> Rates:
 
 
 def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
+    """A at a generic point, complex allowed; a few points are tried until every entry is finite."""
     if A.rows == 0:
         return np.zeros((0, A.cols))
-    point = random_point(A.free_symbols)
-    values = A.xreplace(point).evalf()
-    return np.array(values.tolist(), dtype=float)
+    for attempt in range(5):
+        point = random_point(A.free_symbols, _SEED + attempt)
+        try:
+            values = np.array(A.xreplace(point).evalf(20).tolist(), dtype=complex)
+        except (TypeError, ValueError, ArithmeticError):
+            continue
+        if np.all(np.isfinite(values)):
+            return values
+    raise _error(system, system.location, "",
+                 "the coefficients of the constraints and quasi-coordinates cannot be evaluated "
+                 "to finite numbers at generic points")
 
 
 def random_point(symbols, seed: int = _SEED) -> dict[sp.Symbol, sp.Float]:

@@ -89,7 +89,7 @@ class SourceFile:
         return Location(self.path, node.line, node.column)
 
 
-def _fail(path: str, message: str, line: int = 0, column: int = 0) -> SystemFileError:
+def _fail(path: str, message: str, line: int = 1, column: int = 1) -> SystemFileError:
     return SystemFileError([Diagnostic(Location(path, line, column), message)])
 
 
@@ -97,12 +97,16 @@ def read_source(path: str | Path) -> SourceFile:
     """Read and compose a system file; every failure is a located SystemFileError."""
     name = str(path)
     try:
-        size = Path(path).stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise _fail(name, f"file is too large ({size} bytes; the limit is {MAX_FILE_BYTES})")
-        data = Path(path).read_bytes()
+        if not Path(path).is_file():
+            raise _fail(name, "not a regular file")
+        # Read one byte past the limit rather than trusting the size: the
+        # path may be a FIFO or a link to /dev/zero.
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
         raise _fail(name, f"cannot read the file: {exc.strerror or exc}") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise _fail(name, f"file is too large (more than {MAX_FILE_BYTES} bytes)")
     return parse_source(data, name)
 
 
@@ -115,7 +119,7 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
-        line, col = (mark.line + 1, mark.column + 1) if mark else (0, 0)
+        line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         problem = exc.problem or exc.context or "invalid YAML"
         raise _fail(path, f"invalid YAML: {problem}", line, col) from None
     except yaml.YAMLError as exc:  # e.g. a reader error on control characters

@@ -177,7 +177,7 @@ KNOWN_CORE_CRASHES = {
 }
 
 
-@pytest.mark.xfail(strict=True, reason="core crash reported to the lead; remove this mark once fixed")
+
 @pytest.mark.parametrize("name", sorted(KNOWN_CORE_CRASHES))
 def test_known_core_crash(name: str, tmp_path: Path):
     from gacli.check import check_file

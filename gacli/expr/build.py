@@ -113,7 +113,19 @@ def _suggest(word: str, scope: Scope) -> str:
 
 def _call(node: Call, scope: Scope) -> sp.Expr:
     args = [build(arg, scope) for arg in node.args]
-    return _FUNCTIONS[node.func](*args)
+    try:
+        value = _FUNCTIONS[node.func](*args)
+    except (ArithmeticError, ValueError, TypeError, RecursionError):
+        # SymPy evaluates numeric arguments eagerly and some extreme ones fail inside it.
+        raise BuildError(f"{node.func}(...) cannot be evaluated for these arguments", node.pos) from None
+    return _defined(value, node.pos)
+
+
+def _defined(value: sp.Expr, pos: int) -> sp.Expr:
+    """Refuse undefined numbers (0/0, log(0), atan2(0, 0)) where they appear."""
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise BuildError("the expression is undefined or infinite here", pos)
+    return value
 
 
 def _binop(node: BinOp, scope: Scope) -> sp.Expr:
@@ -128,13 +140,16 @@ def _binop(node: BinOp, scope: Scope) -> sp.Expr:
     if node.op == "/":
         if right == 0:
             raise BuildError("division by zero", node.pos)
-        return left / right
+        return _defined(left / right, node.pos)
     _check_power(left, right, node.pos)
-    return left**right
+    return _defined(left**right, node.pos)
 
 
 def _check_power(base: sp.Expr, exponent: sp.Expr, pos: int) -> None:
     """Refuse powers whose evaluation would be huge, before SymPy tries it."""
+    for part in (base, exponent):
+        if part.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise BuildError("the expression is undefined or infinite here", pos)
     if not exponent.is_Number:
         return
     if abs(exponent) > MAX_EXPONENT:
