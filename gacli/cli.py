@@ -242,5 +242,43 @@ def simulate(
         simulate_console.summary(result)
 
 
+@app.command()
+def linearize(
+    file: SystemPath,
+    at: Annotated[Optional[str], typer.Option(help='Operating point: state and input values, "roll=0,dot(wheel_R)=-15".')] = None,
+    set_: Annotated[Optional[str], typer.Option("--set", help='Parameter values over the file\'s, "g=9.81".')] = None,
+    states: Annotated[Optional[str], typer.Option(help="Keep these states (rows and columns of A), as lean,steer,dot(lean).")] = None,
+    symbolic: Annotated[bool, typer.Option(help="A and B as expressions (small systems).")] = False,
+) -> None:
+    """Linearize about an operating point: A, B and the eigenvalues of A.
+
+    Example: gacli linearize systems/cylinder_in_cylinder.yaml --states "theta,dot(theta)"
+    """
+    from gacli import console
+    from gacli import linearize as L
+    from gacli.simulate import parse_assignments
+
+    with _boundary():
+        derivation = _derive(file)
+        if symbolic:
+            A, B = L.linearize_symbolic(derivation)
+            console.raw(f"A = {A}\nB = {B}")
+            return
+        from gacli.emit.naming import parameter_defaults
+
+        defaults = parameter_defaults(derivation.system.parameters)
+        overrides = L.evaluate_assignments(parse_assignments(set_ or "", "--set"), defaults, "--set")
+        point = L.evaluate_assignments(parse_assignments(at or "", "--at"), {**defaults, **overrides}, "--at")
+        result = L.linearize(derivation, point, overrides)
+        names = [n.strip() for n in states.split(",")] if states else list(result.state)
+        A = result.block(names)
+        lines = ["A ="] + L.format_matrix(A, names, names)
+        if result.inputs and not states:
+            lines += ["", "B ="] + L.format_matrix(result.B, result.state, result.inputs)
+        lines += ["", "eigenvalues:"] + [f"  {v.real:.10g} {'+' if v.imag >= 0 else '-'} {abs(v.imag):.10g}i"
+                                          for v in result.eigenvalues(names)]
+        console.raw("\n".join(lines))
+
+
 def main() -> None:
     app()

@@ -25,7 +25,7 @@ def test_version():
     assert result.output.strip() == f"gacli {__version__}"
 
 
-@pytest.mark.parametrize("command", ["derive", "gibbs", "simulate"])
+@pytest.mark.parametrize("command", ["derive", "gibbs", "simulate", "check", "schema", "linearize"])
 def test_every_command_help_has_a_working_example(command):
     result = run(command, "--help")
     assert result.exit_code == 0

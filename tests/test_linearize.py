@@ -1,0 +1,60 @@
+"""Linearization: A and B against closed forms and against KanesMethod, and the command."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+from typer.testing import CliRunner
+
+from conftest import SYSTEMS, derived
+from gacli.cli import app
+from gacli.linearize import linearize, linearize_symbolic
+
+
+def test_cylinder_is_a_pendulum_of_frequency_sqrt_2g_3c():
+    lin = linearize(derived("cylinder_in_cylinder"))
+    g, c = 9.81, 0.5 - 0.1
+    A = lin.block(["theta", "dot(theta)"])
+    np.testing.assert_allclose(A, [[0, 1], [-2 * g / (3 * c), 0]], rtol=1e-14, atol=1e-14)
+    np.testing.assert_allclose(sorted(lin.eigenvalues(["theta", "dot(theta)"]).imag),
+                               [-np.sqrt(2 * g / (3 * c)), np.sqrt(2 * g / (3 * c))], rtol=1e-12)
+
+
+def test_symbolic_and_numeric_agree_for_the_top():
+    d = derived("spinning_top")
+    at = {"theta": 0.4, "dot(phi)": 0.3, "dot(q)": 50.0}
+    numeric = linearize(d, at).A
+    A, _ = linearize_symbolic(d, at)
+    values = {sp.Symbol(n, real=True): v for n, v in
+              {"m": 1, "g": 9.81, "l": 0.05, "A": 0.0005, "C": 0.0008}.items()}
+    np.testing.assert_allclose(np.array(A.xreplace(values).evalf().tolist(), dtype=float), numeric,
+                               rtol=1e-10, atol=1e-10)
+
+
+def test_rolling_disk_against_kane_finite_differences():
+    """∂u̇/∂(lean, u) at upright rolling, gacli's complex step against central differences of Kane's u̇."""
+    from test_frames import kane_accelerations, kane_rolling_disk
+
+    kane, (yaw, lean, spin), u, (m, r, g) = kane_rolling_disk()
+    values = {m: 2.0, r: 0.3, g: 9.81}
+    spin_rate = -10.0
+    base = {yaw: 0.0, lean: 0.0, spin: 0.0, u[0]: 0.0, u[1]: 0.0, u[2]: spin_rate}
+
+    def kane_u_dot(changes):
+        return kane_accelerations(kane, {**base, **values, **changes})
+
+    lin = linearize(derived("rolling_disk"), {"dot(spin)": spin_rate})
+    rows = [lin.state.index(n) for n in ("dot(yaw)", "dot(lean)", "dot(spin)")]
+    h = 1e-6
+    for name, symbol in (("lean", lean), ("dot(yaw)", u[0]), ("dot(lean)", u[1]), ("dot(spin)", u[2])):
+        column = (kane_u_dot({symbol: base[symbol] + h}) - kane_u_dot({symbol: base[symbol] - h})) / (2 * h)
+        np.testing.assert_allclose(lin.A[rows, lin.state.index(name)], column, rtol=1e-6, atol=1e-6)
+
+
+def test_linearize_command():
+    result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"),
+                                      "--states", "theta,dot(theta)"])
+    assert result.exit_code == 0, result.output
+    assert "-16.35" in result.output and "eigenvalues:" in result.output
+    bad = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--states", "lean"])
+    assert bad.exit_code == 1 and "not in the state: lean" in bad.output
