@@ -1,0 +1,88 @@
+"""The benchmark cases: a gacli system file and, where written, the same system for KanesMethod.
+
+=========  =====================================================  ==================
+case       system                                                 sizes
+=========  =====================================================  ==================
+pendulum   n-link planar pendulum, point masses, absolute angles  n links, k = n
+chain      n rigid links joined by ball joints, 3 angles each     n links, k = 3n
+disk       thin disk rolling without slipping (nonholonomic)      one size, k = 3
+bicycle    a bicycle model, gacli only, when a file exists        one size, opt-in
+=========  =====================================================  ==================
+
+Pendulum and chain files are generated at run time (``make_pendulum.py``,
+``make_chain.py``) into a scratch directory; the disk is
+``benchmarks/cases/rolling_disk.yaml``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import bench_kane
+from make_chain import write_chain
+from make_pendulum import write_pendulum
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+
+CASE_NAMES = ("pendulum", "chain", "disk", "bicycle")
+DEFAULT_CASES = ("pendulum", "chain", "disk")
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    size: int | None                 # links, or None for a one-size case
+    path: Path                       # the gacli system file
+    kane: Callable[[], bench_kane.KaneModel] | None
+    coordinate_range: float = 1.0    # coordinates are drawn from [-c, c]
+    default_parameters: bool = False # the file's parameter values (else random in [0.5, 1.5])
+
+    @property
+    def label(self) -> str:
+        return self.name if self.size is None else f"{self.name} n={self.size}"
+
+
+def pendulum(n: int, scratch: Path) -> Case:
+    return Case("pendulum", n, write_pendulum(n, scratch), lambda: bench_kane.pendulum(n))
+
+
+def chain(n: int, scratch: Path) -> Case:
+    return Case("chain", n, write_chain(n, scratch), lambda: bench_kane.chain(n))
+
+
+def disk() -> Case:
+    return Case("disk", None, HERE / "cases" / "rolling_disk.yaml", bench_kane.rolling_disk)
+
+
+def bicycle_files() -> list[Path]:
+    found = sorted((ROOT / "systems").glob("*bicycle*.yaml")) + sorted((HERE / "cases").glob("*bicycle*.yaml"))
+    return found[:1]
+
+
+def bicycle() -> Case | None:
+    files = bicycle_files()
+    return Case("bicycle", None, files[0], None, 0.3, default_parameters=True) if files else None
+
+
+def cases(names: list[str], sizes: list[int], chain_sizes: list[int], scratch: Path) -> tuple[list[Case], list[str]]:
+    """The cases to run, in order, and notes on the ones skipped."""
+    out, skipped = [], []
+    for name in names:
+        if name == "pendulum":
+            out += [pendulum(n, scratch) for n in sizes]
+        elif name == "chain":
+            out += [chain(n, scratch) for n in chain_sizes]
+        elif name == "disk":
+            out.append(disk())
+        elif name == "bicycle":
+            case = bicycle()
+            if case is None:
+                skipped.append("bicycle: skipped, no systems/*bicycle*.yaml or benchmarks/cases/*bicycle*.yaml")
+            else:
+                out.append(case)
+        else:
+            raise ValueError(f"unknown case {name!r} (one of {', '.join(CASE_NAMES)})")
+    return out, skipped
