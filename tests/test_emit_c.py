@@ -177,3 +177,24 @@ def test_r_may_be_null_without_inputs(library):
     xdot, status = lib.rhs(0.0, [0.3, 0.0, 1.0], [1.0, 9.81, 0.1, 0.5, 0.4], ())
     assert status == 0
     np.testing.assert_allclose(xdot, [1.0, 4.0, -9.81 * np.sin(0.3) / (1.5 * 0.4)], rtol=1e-14)
+
+
+def test_readme_main_compiles_and_runs(tmp_path):
+    """The main() shown in the README (kept as docs/sphere_main.c) builds against the generated code."""
+    import subprocess
+
+    from conftest import ROOT, require_tool
+    from gacli.cli import app
+    from typer.testing import CliRunner
+
+    cc = require_tool("gcc")
+    main = (ROOT / "docs" / "sphere_main.c").read_text()
+    assert main.strip() in (ROOT / "README.md").read_text()
+    result = CliRunner().invoke(app, ["derive", str(ROOT / "systems" / "sphere_on_turntable.yaml"),
+                                      "--format", "c", "--output", str(tmp_path / "build")])
+    assert result.exit_code == 0, result.output
+    (tmp_path / "main.c").write_text(main)
+    subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-Ibuild", "main.c",
+                    "build/sphere_on_turntable.c", "-lm", "-o", "sphere"], cwd=tmp_path, check=True)
+    out = subprocess.run([str(tmp_path / "sphere")], capture_output=True, text=True, check=True).stdout
+    assert out.startswith("x = ")

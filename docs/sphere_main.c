@@ -1,0 +1,26 @@
+#include <stdio.h>
+#include "sphere_on_turntable.h"
+
+int main(void)
+{
+    double x[SPHERE_ON_TURNTABLE_NX] = {0};
+    double p[SPHERE_ON_TURNTABLE_NP];
+    double r[SPHERE_ON_TURNTABLE_NR] = {0};
+    double xdot[SPHERE_ON_TURNTABLE_NX];
+    const double dt = 1e-3;
+
+    p[SPHERE_ON_TURNTABLE_P_M] = 1.0;
+    p[SPHERE_ON_TURNTABLE_P_A] = 0.1;
+    p[SPHERE_ON_TURNTABLE_P_I] = 0.4 * 1.0 * 0.1 * 0.1;
+    r[SPHERE_ON_TURNTABLE_R_OMEGA] = 2.0;          /* the plane turns at 2 rad/s */
+    x[SPHERE_ON_TURNTABLE_X_DOT_X] = 0.1;          /* rolling along x at first */
+
+    for (int step = 0; step < 5000; ++step) {      /* explicit Euler, 5 s */
+        if (sphere_on_turntable_rhs(step * dt, x, p, r, xdot) != 0)
+            return 1;                               /* M not positive definite */
+        for (int i = 0; i < SPHERE_ON_TURNTABLE_NX; ++i)
+            x[i] += dt * xdot[i];
+    }
+    printf("x = %.4f, y = %.4f\n", x[SPHERE_ON_TURNTABLE_X_X], x[SPHERE_ON_TURNTABLE_X_Y]);
+    return 0;
+}
