@@ -19,7 +19,6 @@ from gacli.loading import load, loads
 ROOT = Path(__file__).resolve().parent.parent
 SYSTEM_FILES = sorted((ROOT / "systems").glob("*.yaml"))
 GOLDEN = ROOT / "tests" / "golden"
-PDFLATEX = shutil.which("pdflatex")
 
 
 @functools.lru_cache(maxsize=None)
@@ -212,23 +211,24 @@ def test_golden_cylinder_in_cylinder():
 # -- pdflatex ------------------------------------------------------------------
 
 def _compile(text: str, name: str, tmp_path: Path) -> None:
+    from conftest import require_tool
+
+    pdflatex = require_tool("pdflatex")  # a skip here, a failure in CI
     (tmp_path / name).write_text(text, encoding="utf-8")
     run = subprocess.run(
-        [PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", name],
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", name],
         cwd=tmp_path, capture_output=True, text=True, timeout=120,
     )
     assert run.returncode == 0, run.stdout[-3000:]
     assert (tmp_path / name).with_suffix(".pdf").exists()
 
 
-@pytest.mark.skipif(PDFLATEX is None, reason="pdflatex not installed")
 @pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
 def test_standalone_compiles(path, tmp_path):
     ((name, text),) = emit_latex(derived(path.stem), standalone=True).items()
     _compile(text, name, tmp_path)
 
 
-@pytest.mark.skipif(PDFLATEX is None, reason="pdflatex not installed")
 def test_standalone_compiles_with_special_characters_in_free_text(tmp_path):
     ((name, text),) = emit_latex(derive(loads(OVERRIDE_SYSTEM)), standalone=True).items()
     assert text.split(r"\begin{document}")[1].isascii()
