@@ -75,7 +75,7 @@ def stage_times(path: Path) -> tuple[float, list[tuple[str, float]]]:
     marks.append(("load", time.perf_counter()))
     derive(system, progress=lambda name: marks.append((name, time.perf_counter())))
     end = time.perf_counter()
-    stages, previous = [], start
+    stages = []
     names = [name for name, _ in marks]
     times = [t for _, t in marks] + [end]
     # marks[0] closes "load"; each later mark opens its stage, closed by the next mark (or the end).

@@ -131,5 +131,5 @@ def test_a_broken_file_does_not_validate(validator, change):
 
 def test_the_editor_line_is_documented():
     text = (ROOT / "docs" / "check.md").read_text(encoding="utf-8")
-    assert f"# yaml-language-server: $schema=" in text
+    assert "# yaml-language-server: $schema=" in text
     assert SCHEMA_FILE in text

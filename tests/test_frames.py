@@ -8,7 +8,6 @@ speeds; u̇ from both agree at random states.
 from __future__ import annotations
 
 import numpy as np
-import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
