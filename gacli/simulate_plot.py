@@ -14,9 +14,6 @@ gacli writes.
 
 from __future__ import annotations
 
-import contextlib
-import os
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -77,13 +74,8 @@ def _phase(ax, sim: Simulation, phase: Sequence[str]) -> None:
 
 
 def _save(figure, path: Path) -> None:
+    from gacli.output import atomic_path
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent)
-    os.close(fd)
-    try:
+    with atomic_path(path) as tmp:
         figure.savefig(tmp, format=path.suffix.lower().lstrip("."))
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise

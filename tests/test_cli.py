@@ -128,3 +128,15 @@ def test_simulate_command(tmp_path):
     missing = run("simulate", SPHERE, "--t-end", "1")
     assert missing.exit_code == 1
     assert "Traceback" not in missing.output
+
+
+def test_output_files_get_ordinary_permissions(tmp_path):
+    import os
+    import stat
+
+    target = tmp_path / "cyl.py"
+    result = run("derive", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--format", "python", "--output", str(target))
+    assert result.exit_code == 0, result.output
+    umask = os.umask(0)
+    os.umask(umask)
+    assert stat.S_IMODE(target.stat().st_mode) == 0o666 & ~umask

@@ -440,7 +440,14 @@ def _one_line(text: str) -> str:
 
 def _text(text: str) -> str:
     """Free text from the system file as LaTeX text that pdflatex accepts (ASCII out)."""
-    return "".join(_text_char(c) for c in _one_line(text))
+    out: list[str] = []
+    for c in unicodedata.normalize("NFC", _one_line(text)):
+        if c in _ACCENTS and out:
+            # A combining mark left over after NFC (u̇ has no precomposed form): accent the last letter.
+            out[-1] = rf"\{_ACCENTS[c]}{{{out[-1]}}}"
+        else:
+            out.append(_text_char(c))
+    return "".join(out)
 
 
 def _text_char(c: str) -> str:
