@@ -152,17 +152,108 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
 
 
 def _mass_and_inertial_terms(motions: tuple[BodyMotion, ...], rates: Rates) -> tuple[sp.Matrix, sp.Matrix]:
-    """M and the u̇-free part of ∂G/∂u̇ (eq. 14.19 without expanding G)."""
-    M = sp.zeros(rates.k, rates.k)
-    rest = sp.zeros(rates.k, 1)
+    """M and the u̇-free part of ∂G/∂u̇ (eq. 14.19 without expanding G).
+
+    Each entry is collected as a list of terms and summed once: adding whole
+    matrices body by body re-flattens ever longer sums. Terms that differ only
+    in their mass (or inertia) factor share one sum of masses, so a chain of n
+    bodies gives entries with O(n) terms rather than O(n²).
+    """
+    k = rates.k
     u = sp.Matrix(rates.speeds)
+    symmetric = all(m.angular is None or _is_symmetric(m.body.inertia) for m in motions)
+    mass_terms: dict[tuple[int, int], dict[sp.Expr, list[sp.Expr]]] = {}
+    rest_terms: list[dict[sp.Expr, list[sp.Expr]]] = [{} for _ in range(k)]
     for motion in motions:
         V, m = motion.linear.partials, motion.body.mass
-        M += m * (V.T * V)
-        rest += m * (V.T * motion.linear.acceleration_rest)
+        _add_quadratic_terms(mass_terms, V, sp.eye(V.rows) * m, symmetric)
+        _add_linear_terms(rest_terms, V, m * motion.linear.acceleration_rest)
         if motion.angular is not None:
             W, I = motion.angular.partials, motion.body.inertia
             w = W * u + motion.angular.velocity0
-            M += W.T * I * W
-            rest += W.T * (I * motion.angular.acceleration_rest + w.cross(I * w))
+            _add_quadratic_terms(mass_terms, W, I, symmetric)
+            # Kept whole: the angular terms of different bodies rarely coincide, and splitting
+            # I α + ω × Iω would undo the factoring that keeps it small.
+            _add_linear_terms(rest_terms, W, I * motion.angular.acceleration_rest + w.cross(I * w), split=False)
+    M = sp.zeros(k, k)
+    for (i, j), terms in mass_terms.items():
+        M[i, j] = _pythagorean(_sum_grouped(terms))
+        if symmetric:
+            M[j, i] = M[i, j]
+    rest = sp.Matrix([_sum_grouped(terms) for terms in rest_terms]) if k else sp.zeros(0, 1)
     return M, rest
+
+
+def _is_symmetric(I: sp.Matrix) -> bool:
+    return all(I[a, b] == I[b, a] for a in range(I.rows) for b in range(a))
+
+
+def _add_quadratic_terms(entries, P: sp.Matrix, C: sp.Matrix, lower_only: bool) -> None:
+    """Add the terms P_ai C_ab P_bj of (Pᵀ C P)_ij, grouped by the geometric factor P_ai P_bj.
+
+    With a symmetric C (every mass matrix m·1 and inertia matrix), Pᵀ C P is
+    symmetric: only i ≥ j is formed and the caller mirrors it.
+    """
+    rows, C = P.tolist(), C.tolist()  # plain lists: matrix indexing is slow
+    nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
+    for i in range(P.cols):
+        for j in range(i + 1 if lower_only else P.cols):
+            groups = entries.setdefault((i, j), {})
+            for a, p_ai in nonzero[i]:
+                for b, p_bj in nonzero[j]:
+                    if C[a][b] != 0:
+                        _add_term(groups, p_ai * p_bj, C[a][b])
+
+
+def _add_linear_terms(entries, P: sp.Matrix, g: sp.Matrix, split: bool = True) -> None:
+    """Add the terms of (Pᵀ g)_s, g split into its terms so that equal products share their factors."""
+    for row, g_a in zip(P.tolist(), g):
+        if g_a == 0:
+            continue
+        terms = sp.Add.make_args(g_a) if split else (g_a,)
+        for s, p_as in enumerate(row):
+            if p_as != 0:
+                for term in terms:
+                    _add_term(entries[s], p_as * term, sp.S.One)
+
+
+def _add_term(groups: dict[sp.Expr, list[sp.Expr]], product: sp.Expr, factor: sp.Expr) -> None:
+    """Record factor·product under product's symbol part (its numeric coefficient goes to the factor)."""
+    coefficient, key = product.as_coeff_Mul()
+    groups.setdefault(key, []).append(coefficient * factor)
+
+
+def _sum_grouped(groups: dict[sp.Expr, list[sp.Expr]]) -> sp.Expr:
+    """Σ (Σ factors)·key, summed once (one sp.Add per entry)."""
+    return sp.Add(*[sp.Add(*factors) * key for key, factors in groups.items()])
+
+
+def _pythagorean(expr: sp.Expr) -> sp.Expr:
+    """c·sin(x)² + c·cos(x)² → c among the terms of a sum, in one pass per round.
+
+    The squared partial velocities of a rotating point (the diagonal of M,
+    eq. 14.19) give these pairs; SymPy's trigsimp would find them too, at a
+    far higher cost.
+    """
+    while expr.is_Add:
+        terms = list(expr.args)
+        halves: dict[tuple[sp.Expr, sp.Expr], dict[type, int]] = {}
+        pairs: list[tuple[int, int, sp.Expr]] = []
+        used: set[int] = set()
+        for index, term in enumerate(terms):
+            factors = sp.Mul.make_args(term)
+            for f in factors:
+                if f.is_Pow and f.exp == 2 and isinstance(f.base, (sp.sin, sp.cos)):
+                    rest = sp.Mul(*[g for g in factors if g is not f])
+                    seen = halves.setdefault((rest, f.base.args[0]), {})
+                    other = seen.get(sp.cos if isinstance(f.base, sp.sin) else sp.sin)
+                    if other is not None and other not in used and index not in used:
+                        used.update((other, index))
+                        pairs.append((other, index, rest))
+                    else:
+                        seen.setdefault(type(f.base), index)
+        if not pairs:
+            break
+        kept = [t for index, t in enumerate(terms) if index not in used]
+        expr = sp.Add(*kept, *[rest for _, _, rest in pairs])
+    return expr

@@ -13,7 +13,8 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.kinematics import BodyMotion, Rates, point_partials
+from gacli.fastdiff import gradient
+from gacli.kinematics import BodyMotion, Rates, point_partials, product
 from gacli.model import System
 
 
@@ -55,6 +56,5 @@ def _from_potential(system: System, rates: Rates) -> sp.Matrix:
     if system.potential == 0:
         return sp.zeros(rates.k, 1)
     coords = [c.name for c in system.coordinates]
-    gradient = sp.Matrix([[sp.diff(system.potential, S.value(n)) for n in coords]])
     b, _ = rates.rows(coords)
-    return -(gradient * b).T
+    return -product(gradient(system.potential, [S.value(n) for n in coords]), b).T

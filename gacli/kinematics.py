@@ -18,6 +18,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
+from gacli.fastdiff import jacobian
 from gacli.model import Body, Form, System
 
 # Ranks are decided at a random configuration: a generic rank of a matrix of
@@ -272,7 +273,7 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     A, a0 = sp.Matrix(rates.relations), sp.Matrix(rates.relations_dt)
     chain = rate_symbols_chain(system)
     velocity = sp.Matrix([S.rate(n) for n in names])
-    c = (A * velocity + a0).applyfunc(lambda e: S.time_derivative(e, chain))
+    c = (A * velocity + a0).applyfunc(S.time_differentiator(chain))
     c = c.xreplace({S.rate(n): rates.rate(n) for n in dependent})
     Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
     solution = Ad.LUsolve(-c)
@@ -284,14 +285,14 @@ def point_motion(position, system: System, rates: Rates, gamma=None) -> Motion:
     """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14)."""
     r = sp.Matrix(position)
     coords = [c.name for c in system.coordinates]
-    J = r.jacobian([S.value(c) for c in coords])
+    J = jacobian(r, [S.value(c) for c in coords])
     b, b0 = rates.rows(coords)
-    functions = function_chain(system)
-    explicit = r.applyfunc(lambda e: S.time_derivative(e, functions))
-    velocity_symbols = J * sp.Matrix([S.rate(c) for c in coords]) + explicit
+    explicit = r.applyfunc(S.time_differentiator(function_chain(system)))
+    velocity_symbols = product(J, sp.Matrix([S.rate(c) for c in coords])) + explicit
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = J * sp.Matrix([gamma[c] for c in coords]) + _rest_of_derivative(velocity_symbols, system, rates)
-    return Motion(sp.ImmutableMatrix(J * b), sp.ImmutableMatrix(J * b0 + explicit), sp.ImmutableMatrix(rest))
+    rest = product(J, sp.Matrix([gamma[c] for c in coords])) + _rest_of_derivative(velocity_symbols, system, rates)
+    return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(product(J, b0) + explicit),
+                  sp.ImmutableMatrix(rest))
 
 
 def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motion:
@@ -299,23 +300,43 @@ def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motio
     names = list(rates.names)
     W = sp.Matrix([[form.coefficient(n) for n in names] for form in rotation])
     W0 = sp.Matrix([form.dt for form in rotation])
-    omega_symbols = W * sp.Matrix([S.rate(n) for n in names]) + W0
+    omega_symbols = product(W, sp.Matrix([S.rate(n) for n in names])) + W0
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = W * sp.Matrix([gamma[n] for n in names]) + _rest_of_derivative(omega_symbols, system, rates)
-    return Motion(sp.ImmutableMatrix(W * rates.beta), sp.ImmutableMatrix(W * rates.beta0 + W0), sp.ImmutableMatrix(rest))
+    rest = product(W, sp.Matrix([gamma[n] for n in names])) + _rest_of_derivative(omega_symbols, system, rates)
+    return Motion(sp.ImmutableMatrix(product(W, rates.beta)), sp.ImmutableMatrix(product(W, rates.beta0) + W0),
+                  sp.ImmutableMatrix(rest))
 
 
 def point_partials(position, system: System, rates: Rates) -> sp.Matrix:
     """The partial velocities J β of a point (the α_rs of eq. 14.6)."""
     coords = [c.name for c in system.coordinates]
-    J = sp.Matrix(position).jacobian([S.value(c) for c in coords])
-    return J * rates.rows(coords)[0]
+    J = jacobian(sp.Matrix(position), [S.value(c) for c in coords])
+    return product(J, rates.rows(coords)[0])
+
+
+def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
+    """A B that skips zero factors and takes a unit entry of B as a plain selection.
+
+    β is mostly a selection: an independent coordinate's row of β is a unit
+    row (eq. 14.7), so J β mostly copies columns of J; forming every J_ir β_rs
+    product and sum, as the general matrix product does, costs far more.
+    """
+    if A.cols != B.rows:
+        raise ValueError(f"cannot multiply {A.rows}x{A.cols} by {B.rows}x{B.cols}")
+    columns = [[(r, B[r, j]) for r in range(B.rows) if B[r, j] != 0] for j in range(B.cols)]
+    return sp.Matrix(A.rows, B.cols, lambda i, j: _dot(A, i, columns[j]))
+
+
+def _dot(A: sp.Matrix, i: int, column: list[tuple[int, sp.Expr]]) -> sp.Expr:
+    if len(column) == 1 and column[0][1] == 1:
+        return A[i, column[0][0]]
+    return sp.Add(*[A[i, r] * b for r, b in column if A[i, r] != 0])
 
 
 def _rest_of_derivative(vector: sp.Matrix, system: System, rates: Rates) -> sp.Matrix:
     """d/dt of an expression linear in the rates, without its r̈ terms, the rates then put as β u + β₀."""
     chain = rate_symbols_chain(system)
-    derivative = vector.applyfunc(lambda e: S.time_derivative(e, chain))
+    derivative = vector.applyfunc(S.time_differentiator(chain))
     return derivative.xreplace({S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent})
 
 

@@ -14,6 +14,8 @@ from collections.abc import Iterable, Mapping
 
 import sympy as sp
 
+from gacli.fastdiff import Differentiator
+
 T = sp.Symbol("t", real=True)
 
 _ORDER_PREFIX = {0: "", 1: "dot", 2: "ddot"}
@@ -60,11 +62,12 @@ def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Exp
     (for a dependent coordinate, its rate in terms of the independent rates,
     eq. (14.7)). Symbols absent from ``chain`` are constant.
     """
-    free = expr.free_symbols
-    total = sp.diff(expr, T) if T in free else sp.S.Zero
-    for sym in sorted(free & chain.keys(), key=sp.default_sort_key):
-        total += sp.diff(expr, sym) * chain[sym]
-    return total
+    return time_differentiator(chain)(expr)
+
+
+def time_differentiator(chain: Mapping[sp.Symbol, sp.Expr]) -> Differentiator:
+    """d/dt as one memoised walk (see :mod:`gacli.fastdiff`); reuse it for all entries of a matrix."""
+    return Differentiator({T: sp.S.One, **chain})
 
 
 def is_small(expr: sp.Expr, limit: int) -> bool:

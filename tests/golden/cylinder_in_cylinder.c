@@ -54,12 +54,11 @@ void cylinder_in_cylinder_mass_matrix(double t, const double *x, const double *p
                                       const double *r, double *M)
 {
     (void)t;
+    (void)x;
     (void)r;
-    const double theta = x[CYLINDER_IN_CYLINDER_X_THETA];
     const double M_ = p[CYLINDER_IN_CYLINDER_P_M];
     const double c = p[CYLINDER_IN_CYLINDER_P_C];
-    const double _c0 = pow(c, 2);
-    M[0] = (1.0/2.0)*M_*_c0 + M_*(_c0*pow(sin(theta), 2) + _c0*pow(cos(theta), 2));
+    M[0] = (3.0/2.0)*M_*pow(c, 2);
 }
 
 void cylinder_in_cylinder_forcing(double t, const double *x, const double *p,
@@ -87,11 +86,9 @@ int cylinder_in_cylinder_rhs(double t, const double *x, const double *p,
     const double g = p[CYLINDER_IN_CYLINDER_P_G];
     const double a = p[CYLINDER_IN_CYLINDER_P_A];
     const double c = p[CYLINDER_IN_CYLINDER_P_C];
-    const double _c0 = pow(c, 2);
-    const double _c1 = sin(theta);
     xdot[0] = dot_theta;
     xdot[1] = c*dot_theta/a;
-    M[0] = (1.0/2.0)*M_*_c0 + M_*(_c0*pow(_c1, 2) + _c0*pow(cos(theta), 2));
-    F[0] = -M_*_c1*c*g;
+    M[0] = (3.0/2.0)*M_*pow(c, 2);
+    F[0] = -M_*c*g*sin(theta);
     return cylinder_in_cylinder_cholesky_solve(M, F);
 }

@@ -23,11 +23,9 @@ DEFAULTS = {"M": 1.0, "g": 9.81, "a": 0.1, "b": 0.5, "c": 0.4}
 
 def mass_matrix(t, x, p, r=()):
     """The mass matrix M, shape (1, 1), symmetric positive definite."""
-    theta, phi, dot_theta = map(float, x)
     M_, g, a, b, c = map(float, p)
-    _c0 = c**2
     return numpy.array([
-        [(1/2)*M_*_c0 + M_*(_c0*math.sin(theta)**2 + _c0*math.cos(theta)**2)],
+        [(3/2)*M_*c**2],
     ], dtype=float)
 
 
@@ -44,13 +42,11 @@ def rhs(t, x, p, r=()):
     """d(x)/dt = [q', u'] with M u' = F solved by Cholesky, shape (3,)."""
     theta, phi, dot_theta = map(float, x)
     M_, g, a, b, c = map(float, p)
-    _c0 = c**2
-    _c1 = math.sin(theta)
     M = [  # the lower triangle: all that _cholesky_solve reads
-        [(1/2)*M_*_c0 + M_*(_c0*_c1**2 + _c0*math.cos(theta)**2)],
+        [(3/2)*M_*c**2],
     ]
     F = [
-        -M_*_c1*c*g,
+        -M_*c*g*math.sin(theta),
     ]
     return numpy.array([
         dot_theta,
