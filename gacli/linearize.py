@@ -88,15 +88,32 @@ def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
 
 
 def _numeric_functions(derivation: Derivation, lay, values: Mapping[str, float]):
-    """Vectorised functions of (x, r) for q̇, M and F, with the parameters put in."""
-    numbers = {sym: sp.Float(values[sym.name], 30) for sym in lay.parameter_symbols}
+    """Functions of (x, r) for q̇, M and F, the parameters put in.
+
+    They evaluate the derived expressions as a graph (gacli.numeric), which
+    stays small where the written-out trees are huge (a rolling bicycle).
+    """
+    from gacli.numeric import Evaluator
+
+    fixed = {sym: complex(values[sym.name]) for sym in lay.parameter_symbols}
+    fixed[sp.Symbol("t", real=True)] = 0j
     args = list(lay.state_symbols) + list(lay.r_symbols)
-    kin = sp.Matrix([e for _, e in derivation.kinematic_equations]).xreplace(numbers)
-    M = sp.Matrix(derivation.mass_matrix).xreplace(numbers)
-    F = sp.Matrix(derivation.forcing).xreplace(numbers)
-    # lambdify prints our own expression trees to NumPy code; no file text is involved.
-    make = lambda m: sp.lambdify(args, m, modules="numpy", cse=True)  # noqa: E731
-    return make(kin), make(M), make(F)
+    kin = [e for _, e in derivation.kinematic_equations]
+    k = derivation.k
+
+    def evaluator(point):
+        return Evaluator({**fixed, **dict(zip(args, point))})
+
+    def kinematic(*point):
+        return np.array(evaluator(point).many(kin))
+
+    def mass(*point):
+        return np.array(evaluator(point).many(derivation.mass_matrix)).reshape(k, k)
+
+    def forcing(*point):
+        return np.array(evaluator(point).many(derivation.forcing))
+
+    return kinematic, mass, forcing
 
 
 def _jacobian(kinematic, mass, forcing, x0, r0, wrt: str) -> np.ndarray:
