@@ -183,7 +183,7 @@ class _Findings:
         self.diagnostics.append(Diagnostic(location or Location(self.path, 1, 1), message, where, hint))
 
 
-def check_file(path: str | Path, *, timeout: float | None = DEFAULT_TIMEOUT) -> FileReport:
+def check_file(path: str | Path, *, timeout: float | None = DEFAULT_TIMEOUT, verify: bool = False) -> FileReport:
     """Check one system file; every problem is a Diagnostic in the report, never an exception.
 
     ``timeout`` is the wall-clock budget in seconds (None or 0: none); it is
@@ -193,7 +193,7 @@ def check_file(path: str | Path, *, timeout: float | None = DEFAULT_TIMEOUT) -> 
     findings = _Findings(str(path))
     try:
         with time_limit(timeout or 0, _expiry(findings, timeout)):
-            _check(Path(path), findings)
+            _check(Path(path), findings, verify)
     except SystemFileError as exc:
         findings.diagnostics.extend(exc.diagnostics)
     except GacliError as exc:
@@ -217,7 +217,10 @@ def _crashed(findings: _Findings, exc: Exception, timeout: float | None) -> None
                    hint="this is a bug in gacli; please report it")
 
 
-def _check(path: Path, findings: _Findings) -> None:
+STEP_VERIFY = "verifying by the independent route (eq. 14.10)"
+
+
+def _check(path: Path, findings: _Findings, verify: bool = False) -> None:
     findings(STEP_READ)
     _require_regular_file(path)
     source = read_source(path)
@@ -230,6 +233,18 @@ def _check(path: Path, findings: _Findings) -> None:
     findings.classifications = classify(system)
     findings(STEP_MASS)
     findings.mass_matrix = _check_mass_matrix(derivation, findings)
+    if verify:
+        findings(STEP_VERIFY)
+        _verify(system, derivation, findings)
+
+
+def _verify(system, derivation, findings: _Findings) -> None:
+    """gacli verify's check as diagnostics: each failing equation is one error."""
+    from gacli.verify import verify
+
+    report = verify(system, derivation)
+    for failure in report.failures:
+        findings.error(f"verify: {failure}")
 
 
 def _require_regular_file(path: Path) -> None:
@@ -409,6 +424,7 @@ def _positive_definite(M, values, symmetric, findings: _Findings, where: Locatio
 
 def check_paths(
     patterns: Iterable[str | Path], *, timeout: float | None = DEFAULT_TIMEOUT, strict: bool = False,
+    verify: bool = False,
     on_file: Callable[[Path], None] | None = None,
 ) -> CheckReport:
     """Expand the patterns (PathsError if one matches nothing) and check every file."""
@@ -416,7 +432,7 @@ def check_paths(
     for path in expand_paths(patterns):
         if on_file is not None:
             on_file(path)
-        reports.append(check_file(path, timeout=timeout))
+        reports.append(check_file(path, timeout=timeout, verify=verify))
     return CheckReport(tuple(reports), strict)
 
 

@@ -92,6 +92,7 @@ def derive(
     ] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
+    reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers) in the state (text).")] = False,
 ) -> None:
     """Derive the Gibbs-Appell equations of a system and print them.
 
@@ -108,7 +109,13 @@ def derive(
                 raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
             report = steps_report if steps else derivation_report
             console.sections(derivation.system.title or derivation.system.name, report(derivation))
+            if reactions:
+                from gacli.report import reactions_report
+
+                console.sections("", reactions_report(derivation))
             return
+        if reactions:
+            raise typer.BadParameter("--reactions goes with --format text", param_hint="--reactions")
         if steps and format.value != "latex":
             raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
         from gacli.api import emit
@@ -153,6 +160,7 @@ def check(
         CheckFormat, typer.Option("--format", "-f", help="text: a table; json: for machines; github: annotations.")
     ] = CheckFormat.text,
     strict: Annotated[bool, typer.Option("--strict", help="Warnings fail too.")] = False,
+    verify: Annotated[bool, typer.Option("--verify", help="Also check each derivation by the independent route.")] = False,
     timeout: Annotated[
         float, typer.Option("--timeout", min=0, help="Seconds allowed per file (0: no limit).")
     ] = 60.0,
@@ -173,7 +181,8 @@ def check(
                 from gacli import check_console, console
 
                 with console.progress("checking") as step:
-                    report = check_paths(paths, timeout=timeout, strict=strict, on_file=lambda p: step(str(p)))
+                    report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
+                                         on_file=lambda p: step(str(p)))
                 check_console.show(report)
             else:
                 report = check_paths(paths, timeout=timeout, strict=strict)
@@ -278,6 +287,28 @@ def linearize(
         lines += ["", "eigenvalues:"] + [f"  {v.real:.10g} {'+' if v.imag >= 0 else '-'} {abs(v.imag):.10g}i"
                                           for v in result.eigenvalues(names)]
         console.raw("\n".join(lines))
+
+
+@app.command()
+def verify(
+    file: SystemPath,
+    samples: Annotated[int, typer.Option(min=1, help="Random admissible states to compare at.")] = 20,
+    tol: Annotated[float, typer.Option(help="Largest relative difference allowed.")] = 1e-9,
+) -> None:
+    """Check the derivation by an independent route: eq. (14.10) over all rates, with multipliers.
+
+    Example: gacli verify systems/sphere_on_turntable.yaml --samples 5
+    """
+    from gacli import console
+
+    with _boundary():
+        derivation = _derive(file)
+        from gacli.verify import format_report, verify as run_verify
+
+        report = run_verify(derivation.system, derivation, samples=samples, tol=tol)
+        console.raw("\n".join(format_report(report)))
+        if not report.passed:
+            raise typer.Exit(code=1)
 
 
 def main() -> None:

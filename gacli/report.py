@@ -94,3 +94,15 @@ def _side(expr) -> str:
     if isinstance(expr, sp.MatrixBase):
         return "[" + ", ".join(show(e) for e in expr) + "]"
     return show(expr)
+
+
+def reactions_report(d: Derivation) -> tuple[Section, ...]:
+    """The constraint forces λ (gacli.verify), one per constraint, in the state."""
+    from gacli.verify import constraint_forces
+
+    tidy = Tidy()
+    forces = constraint_forces(d)
+    lines = [f"lambda_{i} = {show(tidy(value))}    ({c.text})"
+             for i, (value, c) in enumerate(zip(forces, d.system.constraints))]
+    return (Section("Constraint forces (multipliers of eq. 14.1, see docs/verify.md)",
+                    tuple(lines) or ("(no constraints)",)),)

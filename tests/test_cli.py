@@ -25,7 +25,7 @@ def test_version():
     assert result.output.strip() == f"gacli {__version__}"
 
 
-@pytest.mark.parametrize("command", ["derive", "gibbs", "simulate", "check", "schema", "linearize"])
+@pytest.mark.parametrize("command", ["derive", "gibbs", "simulate", "check", "schema", "linearize", "verify"])
 def test_every_command_help_has_a_working_example(command):
     result = run(command, "--help")
     assert result.exit_code == 0
@@ -140,3 +140,13 @@ def test_output_files_get_ordinary_permissions(tmp_path):
     umask = os.umask(0)
     os.umask(umask)
     assert stat.S_IMODE(target.stat().st_mode) == 0o666 & ~umask
+
+
+def test_verify_reactions_and_check_verify():
+    result = run("verify", SPHERE, "--samples", "3")
+    assert result.exit_code == 0, result.output
+    assert "verify: passed" in result.output
+    reactions = run("derive", SPHERE, "--reactions")
+    assert reactions.exit_code == 0 and "lambda_0 = " in reactions.output
+    checked = run("check", "--verify", str(SYSTEMS / "cylinder_in_cylinder.yaml"))
+    assert checked.exit_code == 0, checked.output
