@@ -409,8 +409,9 @@ def _positive_definite(M, values, symmetric, findings: _Findings, where: Locatio
         evaluated += 1
         smallest = float(np.linalg.eigvalsh((numeric + numeric.T) / 2).min()) if M.rows else 1.0
         if smallest <= 1e-12 * max(1.0, float(np.abs(numeric).max())):
-            shown = ", ".join(f"{s.name}={v:.4g}" for s, v in point.items()) or "any state"
-            findings.error(f"M is not positive definite at the sample state {shown} "
+            shown = ", ".join(f"{s.name}={v:.4g}" for s, v in point.items())
+            at = f"at the sample state {shown}" if shown else "at every state (M is constant)"
+            findings.error(f"M is not positive definite {at} "
                            f"(smallest eigenvalue {smallest:.3g})", "mass_matrix",
                            "check the masses and inertias, and that every independent rate moves some body",
                            location=where)

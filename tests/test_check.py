@@ -202,7 +202,7 @@ def test_a_massless_particle_fails_positive_definiteness(tmp_path):
     path = write(tmp_path, "massless.yaml", GOOD.replace("m: {value: 1}", "m: {value: 0}"))
     report = check_file(path)
     assert report.mass_matrix.positive_definite is False
-    assert "M is not positive definite at the sample state theta=" in report.errors[0].message
+    assert "M is not positive definite at every state (M is constant)" in report.errors[0].message
 
 
 def test_positive_definiteness_needs_every_parameter_value(tmp_path):
