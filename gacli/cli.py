@@ -92,7 +92,7 @@ def derive(
     ] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
-    reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers) in the state (text).")] = False,
+    reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
 ) -> None:
     """Derive the Gibbs-Appell equations of a system and print them.
 
@@ -114,13 +114,13 @@ def derive(
 
                 console.sections("", reactions_report(derivation))
             return
-        if reactions:
-            raise typer.BadParameter("--reactions goes with --format text", param_hint="--reactions")
+        if reactions and format.value == "latex":
+            raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
         if steps and format.value != "latex":
             raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
         from gacli.api import emit
 
-        options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {}
+        options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {"reactions": reactions}
         files = emit(derivation, format.value, **options)
         if output is None:
             for _, text in sorted(files.items()):

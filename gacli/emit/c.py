@@ -28,7 +28,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.emit.naming import (
     Entry, Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
-    lower_triangle, mass_matrix_equations,
+    lower_triangle, mass_matrix_equations, reaction_equations,
 )
 from gacli.emit.printers import Block, GacliCPrinter, print_block
 from gacli.equations import Derivation
@@ -67,7 +67,7 @@ $forcing;
    Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive:
    M is not positive definite, and the u' part of xdot is not valid. */
 $rhs;
-
+$reactions
 #ifdef __cplusplus
 }
 #endif
@@ -133,8 +133,10 @@ $body
 ''')
 
 
-def emit_c(derivation: Derivation) -> dict[str, str]:
+def emit_c(derivation: Derivation, *, reactions: bool = False) -> dict[str, str]:
     """The C header and source of a derivation.
+
+    ``reactions`` adds ``NAME_reactions``, the constraint forces.
 
     Raises:
         EmitError: when an expression has no C rendering.
@@ -146,8 +148,11 @@ def emit_c(derivation: Derivation) -> dict[str, str]:
         state=_indices(lay.state_entries), parameters=_indices(lay.parameter_entries) or "/* (none) */",
         r=_indices(lay.r_entries) or "/* (none: r may be NULL) */",
         mass_matrix=_signature(lay, "mass_matrix"), forcing=_signature(lay, "forcing"), rhs=_signature(lay, "rhs"),
+        reactions=_reactions_declaration(derivation, lay) if reactions else "",
     )
     functions = [_mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay)]
+    if reactions:
+        functions.append(_reactions(derivation, lay))
     source = SOURCE.substitute(comment=comment, name=lay.system, prefix=lay.prefix, functions="".join(functions))
     return {f"{lay.system}.h": header, f"{lay.system}.c": source}
 
@@ -177,7 +182,8 @@ def _defines(rows: Sequence[tuple[str, str, str]]) -> str:
     return "\n".join(lines)
 
 
-_RETURNS = {"mass_matrix": ("void", "M"), "forcing": ("void", "F"), "rhs": ("int", "xdot")}
+_RETURNS = {"mass_matrix": ("void", "M"), "forcing": ("void", "F"), "rhs": ("int", "xdot"),
+            "reactions": ("void", "lambda")}
 
 
 def _signature(lay: Layout, function: str) -> str:
@@ -214,6 +220,17 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
         f"return {lay.function('cholesky_solve')}(M, F);",
     ]
     return _function(lay, "rhs", locals_, block, assignments)
+
+
+def _reactions_declaration(derivation: Derivation, lay: Layout) -> str:
+    count = len(derivation.system.constraints)
+    return (f"\n/* The constraint forces: {count} multipliers, one per constraint in the file's order\n"
+            f"   (docs/verify.md gives their sign and units). */\n{_signature(lay, 'reactions')};\n")
+
+
+def _reactions(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, reaction_equations(derivation))
+    return _function(lay, "reactions", [], block, _assign("lambda", block.results))
 
 
 def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:

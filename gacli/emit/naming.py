@@ -378,3 +378,11 @@ def lower_mass_matrix_equations(derivation: Derivation) -> list[tuple[str, sp.Ex
 def forcing_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
     """The k entries of F."""
     return [(f"F[{s}]", derivation.forcing[s]) for s in range(derivation.k)]
+
+
+def reaction_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
+    """The multipliers λ of the constraints (docs/verify.md), in the state, one per constraint."""
+    from gacli.verify import constraint_forces
+
+    forces = constraint_forces(derivation, simplify=False)
+    return [(f"lambda[{i}]", forces[i]) for i in range(len(forces))]

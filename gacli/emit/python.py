@@ -28,7 +28,7 @@ import sympy as sp
 
 from gacli.emit.naming import (
     Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
-    mass_matrix_equations,
+    mass_matrix_equations, reaction_equations,
 )
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.equations import Derivation
@@ -104,11 +104,14 @@ DOCS = {
     "mass_matrix": "The mass matrix M, shape ({k}, {k}), symmetric positive definite.",
     "forcing": "The forcing F of M u' = F, shape ({k},).",
     "rhs": "d(x)/dt = [q', u'] with M u' = F solved by Cholesky, shape ({nx},).",
+    "reactions": "The constraint forces: one multiplier per constraint, in the file's order (docs/verify.md).",
 }
 
 
-def emit_python(derivation: Derivation) -> dict[str, str]:
+def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str, str]:
     """The Python module of a derivation, as ``{"<name>.py": text}``.
+
+    ``reactions`` adds ``reactions(t, x, p, r)``, the constraint forces.
 
     Raises:
         EmitError: when an expression has no Python rendering.
@@ -117,6 +120,8 @@ def emit_python(derivation: Derivation) -> dict[str, str]:
     functions = [
         _mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay), CHOLESKY_SOLVE,
     ]
+    if reactions:
+        functions.insert(3, _reactions(derivation, lay))
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
         name=lay.system, k=lay.k, imports="import math\n\nimport numpy",
@@ -154,6 +159,12 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
         "return numpy.array([", *_items([*qdot, "*_cholesky_solve(M, F)"], 1), "], dtype=float)",
     ]
     return _function("rhs", lay, body)
+
+
+def _reactions(derivation: Derivation, lay: Layout) -> str:
+    block = _block(lay, reaction_equations(derivation))
+    body = [*_prologue(lay, block), "return numpy.array([", *_items(block.results, 1), "], dtype=float)"]
+    return _function("reactions", lay, body)
 
 
 # -- pieces of code ------------------------------------------------------------
