@@ -221,11 +221,30 @@ def _solve(A, a0, names, independent, dependent):
         Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
         Ai = A.extract(list(range(A.rows)), [names.index(i) for i in independent])
         rhs = (-Ai).row_join(-a0)
-        solution = Ad.LUsolve(rhs).applyfunc(_tidy)
+        solution = solve_linear(Ad, rhs).applyfunc(_tidy)
         for r, name in enumerate(dependent):
             beta[names.index(name), :] = solution[r, :k]
             beta0[names.index(name), 0] = solution[r, k]
     return sp.ImmutableMatrix(beta), sp.ImmutableMatrix(beta0)
+
+
+def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
+    """A⁻¹ B as adj(A) B / det(A), without pivots.
+
+    Gaussian elimination divides by pivots chosen as "not identically zero";
+    such a pivot (sin(yaw), say) can vanish at an ordinary configuration where
+    A is regular, and the solved rates then read 0/0 there (a bicycle going
+    straight north). The adjugate divides only by det A, which vanishes only
+    where the rates are truly undetermined.
+    """
+    if A.rows == 1:
+        return B / A[0, 0]
+    if A.rows > _ADJUGATE_MAX:
+        return A.LUsolve(B)
+    return (A.adjugate(method="berkowitz") * B) / A.det(method="berkowitz")
+
+
+_ADJUGATE_MAX = 6
 
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
@@ -276,7 +295,7 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     c = (A * velocity + a0).applyfunc(S.time_differentiator(chain))
     c = c.xreplace({S.rate(n): rates.rate(n) for n in dependent})
     Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
-    solution = Ad.LUsolve(-c)
+    solution = solve_linear(Ad, -c)
     gamma.update({n: solution[i] for i, n in enumerate(dependent)})
     return gamma
 

@@ -90,28 +90,34 @@ def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
 def _numeric_functions(derivation: Derivation, lay, values: Mapping[str, float]):
     """Functions of (x, r) for q̇, M and F, the parameters put in.
 
-    They evaluate the derived expressions as a graph (gacli.numeric), which
-    stays small where the written-out trees are huge (a rolling bicycle).
+    They run one compiled program over the distinct subexpressions
+    (gacli.numeric), which stays small where the written-out trees are huge.
     """
-    from gacli.numeric import Evaluator
+    from gacli.numeric import Program
 
     fixed = {sym: complex(values[sym.name]) for sym in lay.parameter_symbols}
     fixed[sp.Symbol("t", real=True)] = 0j
     args = list(lay.state_symbols) + list(lay.r_symbols)
     kin = [e for _, e in derivation.kinematic_equations]
-    k = derivation.k
+    n, k = len(kin), derivation.k
+    program = Program(kin + list(derivation.mass_matrix) + list(derivation.forcing))
+    cache: dict[tuple, list[complex]] = {}
 
-    def evaluator(point):
-        return Evaluator({**fixed, **dict(zip(args, point))})
+    def evaluate(point) -> list[complex]:
+        key = tuple(point)
+        if key not in cache:
+            cache.clear()
+            cache[key] = program({**fixed, **dict(zip(args, point))})
+        return cache[key]
 
     def kinematic(*point):
-        return np.array(evaluator(point).many(kin))
+        return np.array(evaluate(point)[:n])
 
     def mass(*point):
-        return np.array(evaluator(point).many(derivation.mass_matrix)).reshape(k, k)
+        return np.array(evaluate(point)[n:n + k * k]).reshape(k, k)
 
     def forcing(*point):
-        return np.array(evaluator(point).many(derivation.forcing))
+        return np.array(evaluate(point)[n + k * k:])
 
     return kinematic, mass, forcing
 

@@ -1,17 +1,17 @@
-"""Evaluate SymPy expressions at a point, once per distinct node.
+"""Evaluate SymPy expressions as a straight-line program over their distinct subexpressions.
 
 Derived expressions share their subexpressions (a solved rate appears in
-every velocity), so as trees they can be millions of nodes while the graph of
-distinct objects stays small. Printing them for ``lambdify`` or substituting
-with ``xreplace`` walks the tree; this evaluator walks the graph, memoised by
-object identity, in complex arithmetic (the complex step of
-:mod:`gacli.linearize` needs it).
+every velocity), so as printed trees they can be millions of nodes while the
+distinct subexpressions stay few. ``lambdify`` prints the trees and
+``xreplace`` rebuilds them; a :class:`Program` is built by one walk of the
+distinct nodes and then evaluated as often as needed, in complex arithmetic
+(the complex step of :mod:`gacli.linearize` needs it).
 """
 
 from __future__ import annotations
 
 import cmath
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
@@ -22,67 +22,94 @@ _FUNCTIONS = {
 }
 
 
-class Evaluator:
-    """Values of expressions at one point; call it on many expressions to share the work."""
+class Program:
+    """The expressions compiled once; ``program(values)`` gives their complex values."""
 
-    def __init__(self, values: Mapping[sp.Symbol, complex]) -> None:
-        self._values = dict(values)
-        self._memo: dict[int, complex] = {}
-        self._keep: list[sp.Basic] = []  # ids stay valid while the objects live
-
-    def __call__(self, expr: sp.Basic) -> complex:
-        stack = [(expr, False)]
+    def __init__(self, exprs: Sequence[sp.Basic]) -> None:
+        slots: dict[sp.Basic, int] = {}
+        self.code: list[tuple] = []
+        stack = [(e, False) for e in reversed(list(exprs))]
         while stack:
             node, ready = stack.pop()
-            if id(node) in self._memo:
+            if node in slots:
                 continue
-            if ready or not node.args or node.is_Number:
-                self._memo[id(node)] = self._value(node)
-                self._keep.append(node)
+            if node.args and not node.is_Number and not ready:
+                stack.append((node, True))
+                stack.extend((a, False) for a in reversed(node.args) if a not in slots)
                 continue
-            stack.append((node, True))
-            stack.extend((arg, False) for arg in node.args if id(arg) not in self._memo)
-        return self._memo[id(expr)]
+            slots[node] = len(self.code)
+            self.code.append(_instruction(node, [slots[a] for a in node.args] if node.args else []))
+        self.outputs = [slots[e] for e in exprs]
 
-    def many(self, exprs: Iterable[sp.Basic]) -> list[complex]:
-        return [self(e) for e in exprs]
+    def __call__(self, values: Mapping[sp.Symbol, complex]) -> list[complex]:
+        out: list = [0j] * len(self.code)
+        for i, (kind, payload, args) in enumerate(self.code):
+            if kind == "add":
+                out[i] = sum(out[a] for a in args)
+            elif kind == "mul":
+                value = 1
+                for a in args:
+                    value *= out[a]
+                out[i] = value
+            elif kind == "ipow":
+                out[i] = out[args[0]] ** payload
+            elif kind == "sqrt":
+                out[i] = cmath.sqrt(out[args[0]])
+            elif kind == "pow":
+                out[i] = out[args[0]] ** out[args[1]]
+            elif kind == "symbol":
+                out[i] = complex(values[payload])
+            elif kind == "number":
+                out[i] = payload
+            else:
+                out[i] = payload(*(out[a] for a in args))
+        return [out[o] for o in self.outputs]
 
-    def _arg(self, node: sp.Basic, i: int) -> complex:
-        return self._memo[id(node.args[i])]
 
-    def _value(self, node: sp.Basic) -> complex:
+def _instruction(node: sp.Basic, args: list[int]) -> tuple:
+    if node.is_Symbol:
+        return ("symbol", node, args)
+    if node.is_Number or node.is_NumberSymbol:
+        return ("number", complex(node), args)
+    if node.is_Add:
+        return ("add", None, args)
+    if node.is_Mul:
+        return ("mul", None, args)
+    if node.is_Pow:
+        if node.exp.is_Integer:
+            return ("ipow", int(node.exp), args)
+        if node.exp == sp.S.Half:
+            return ("sqrt", None, args)
+        return ("pow", None, args)
+    if node.func in _FUNCTIONS:
+        return ("call", _FUNCTIONS[node.func], args)
+    if node.func is sp.atan2:
+        return ("call", _atan2, args)
+    raise TypeError(f"cannot evaluate {node.func.__name__} numerically")
+
+
+def _atan2(y: complex, x: complex) -> complex:
+    """atan2 with the first-order complex part, so that the complex step sees its derivative."""
+    real = cmath.phase(complex(x.real, y.real))
+    return complex(real, (x.real * y.imag - y.real * x.imag) / (x.real ** 2 + y.real ** 2))
+
+
+def free_symbols(exprs: Sequence[sp.Basic]) -> set[sp.Symbol]:
+    """The symbols in the expressions, visiting each distinct subexpression once.
+
+    SymPy's ``free_symbols`` recomputes for every occurrence of a shared
+    subexpression, which on a large derivation is the size of the printed tree.
+    """
+    seen: set[sp.Basic] = set()
+    found: set[sp.Symbol] = set()
+    stack = list(exprs)
+    while stack:
+        node = stack.pop()
+        if node in seen:
+            continue
+        seen.add(node)
         if node.is_Symbol:
-            return complex(self._values[node])
-        if node.is_Number or node.is_NumberSymbol:
-            return complex(node)
-        args = [self._memo[id(a)] for a in node.args]
-        if node.is_Add:
-            return sum(args)
-        if node.is_Mul:
-            out = 1
-            for a in args:
-                out *= a
-            return out
-        if node.is_Pow:
-            base, exponent = args
-            if node.exp == sp.S.Half:
-                return cmath.sqrt(base)
-            if node.exp.is_Integer:
-                return base ** int(node.exp)
-            return base ** exponent
-        return _function(node, args)
-
-
-def _function(node: sp.Basic, args: list[complex]) -> complex:
-    head = node.func
-    if head in _FUNCTIONS:
-        return _FUNCTIONS[head](*args)
-    if head is sp.atan2:
-        y, x = args
-        # Analytic in both arguments, so the complex step sees its derivative.
-        return cmath.phase(complex(x.real, y.real)) + (x.real * y.imag - y.real * x.imag) / (x.real ** 2 + y.real ** 2) * 1j
-    if head is sp.Abs:
-        return args[0] if args[0].real >= 0 else -args[0]
-    if head is sp.sign:
-        return complex((args[0].real > 0) - (args[0].real < 0))
-    raise TypeError(f"cannot evaluate {head.__name__} numerically")
+            found.add(node)
+        else:
+            stack.extend(a for a in node.args if a not in seen)
+    return found

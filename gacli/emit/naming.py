@@ -206,8 +206,10 @@ def layout(derivation: Derivation) -> Layout:
 
 
 def _used_symbols(derivation: Derivation) -> set[sp.Symbol]:
+    from gacli.numeric import free_symbols
+
     exprs = [*derivation.mass_matrix, *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
-    return set().union(*(sp.sympify(e).free_symbols for e in exprs))
+    return free_symbols(exprs)
 
 
 def _r_slots(derivation: Derivation, used: set[sp.Symbol]) -> list[tuple[str, sp.Symbol]]:
