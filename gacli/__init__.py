@@ -51,7 +51,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from gacli.api import emit
     from gacli.equations import Derivation, derive
     from gacli.errors import (
-        DerivationError, Diagnostic, EmitError, GacliError, Location, SystemFileError,
+        DerivationError,
+        Diagnostic,
+        EmitError,
+        GacliError,
+        Location,
+        SystemFileError,
     )
     from gacli.loading import load, loads
     from gacli.model import System

@@ -30,12 +30,25 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.equations import Derivation, derive
-from gacli.errors import DerivationError, Diagnostic, GacliError, Location, SystemFileError
+from gacli.errors import (
+    DerivationError,
+    Diagnostic,
+    GacliError,
+    Location,
+    SystemFileError,
+)
 from gacli.integrability import (
-    Classification, UndefinedValue, classify, decide_zero, evaluate, sample_points, time_limit,
+    Classification,
+    UndefinedValue,
+    classify,
+    decide_zero,
+    evaluate,
+    sample_points,
+    time_limit,
 )
 from gacli.loading import load_source
 from gacli.model import System
+from gacli.numeric import free_symbols
 from gacli.source import read_source
 
 DEFAULT_TIMEOUT = 60.0
@@ -295,7 +308,7 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     """Warnings: unused parameters, unused inputs, coordinates that no body depends on."""
     used = _symbols_used(system)
     loads = [e for f in system.forces for e in f.vector] + [e for t in system.torques for e in t.vector]
-    loaded = _form_symbols(system.work).union(*(sp.sympify(e).free_symbols for e in loads))
+    loaded = _form_symbols(system.work) | free_symbols(loads)
     bodies = _body_dependencies(system)
     out = []
     for p in system.parameters:
@@ -318,7 +331,7 @@ def _warning(location: Location, where: str, message: str) -> Diagnostic:
 def _form_symbols(form) -> set:
     if form is None:
         return set()
-    return set().union(sp.sympify(form.dt).free_symbols, *(sp.sympify(c).free_symbols for _, c in form.coefficients))
+    return free_symbols([form.dt, *(c for _, c in form.coefficients)])
 
 
 def _symbols_used(system: System) -> set:
@@ -330,7 +343,7 @@ def _symbols_used(system: System) -> set:
     exprs += [e for f in system.forces for e in (*f.vector, *f.point)]
     exprs += [e for t in system.torques for e in t.vector] + [system.potential]
     exprs += [c.relation for c in system.constraints]
-    used = set().union(*(sp.sympify(e).free_symbols for e in exprs if e is not None))
+    used = free_symbols([e for e in exprs if e is not None])
     forms = [c.form for c in system.constraints] + [q.differential for q in system.quasi_coordinates]
     forms += [f for b in system.bodies if b.rotation for f in b.rotation] + [system.work]
     return used.union(*(_form_symbols(f) for f in forms))
@@ -341,7 +354,7 @@ def _body_dependencies(system: System) -> set[str]:
     names: set[str] = set()
     coordinates = {S.value(c.name): c.name for c in system.coordinates}
     for body in system.bodies:
-        symbols = set().union(*(sp.sympify(e).free_symbols for e in body.position))
+        symbols = free_symbols(body.position)
         for form in body.rotation or ():
             symbols |= _form_symbols(form)
             names.update(form.names)

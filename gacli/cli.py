@@ -303,7 +303,8 @@ def verify(
 
     with _boundary():
         derivation = _derive(file)
-        from gacli.verify import format_report, verify as run_verify
+        from gacli.verify import format_report
+        from gacli.verify import verify as run_verify
 
         report = run_verify(derivation.system, derivation, samples=samples, tol=tol)
         console.raw("\n".join(format_report(report)))

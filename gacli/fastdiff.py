@@ -22,6 +22,8 @@ from collections.abc import Iterable, Mapping, Sequence
 
 import sympy as sp
 
+from gacli.coerce import as_expr
+
 _ZERO = sp.S.Zero
 
 
@@ -33,11 +35,11 @@ class Differentiator:
     """
 
     def __init__(self, seeds: Mapping[sp.Symbol, sp.Expr]):
-        self._seeds = {s: sp.sympify(v) for s, v in seeds.items() if v != 0}
+        self._seeds = {s: as_expr(v) for s, v in seeds.items() if v != 0}
         self._memo: dict[sp.Basic, sp.Expr] = {}
 
     def __call__(self, expr) -> sp.Expr:
-        expr = sp.sympify(expr)
+        expr = as_expr(expr)
         if not self._seeds:
             return _ZERO
         return self._derivative(expr)
@@ -103,7 +105,7 @@ def _product_rule(factors: Sequence[sp.Expr], derivatives: Sequence[sp.Expr]) ->
 
 def jacobian(exprs: Iterable[sp.Expr], symbols: Sequence[sp.Symbol]) -> sp.Matrix:
     """∂e_i/∂s_j; one memoised walk per symbol, shared by all the expressions."""
-    exprs = [sp.sympify(e) for e in exprs]
+    exprs = [as_expr(e) for e in exprs]
     free = [e.free_symbols for e in exprs]  # an entry without s has ∂/∂s = 0: no walk
     columns = []
     for s in symbols:

@@ -41,6 +41,7 @@ import mpmath
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.coerce import as_expr
 from gacli.errors import GacliError, Location
 from gacli.kinematics import function_chain
 from gacli.model import Form, System
@@ -143,7 +144,7 @@ class _Exterior:
 
     def _active(self, system: System) -> list[str]:
         """Variables with a coefficient, or on which some coefficient depends (declaration order)."""
-        free = set().union(*(sp.sympify(c).free_symbols for c in self.a.values()))
+        free = set().union(*(as_expr(c).free_symbols for c in self.a.values()))
         timed = S.T in free or bool(free & set(self.chain))
         names = list(system.rate_names) + ["t"]
         return [n for n in names if self.a.get(n, 0) != 0 or S.value(n) in free and n in self.coordinates
@@ -151,7 +152,7 @@ class _Exterior:
 
     def partial(self, expr: sp.Expr, variable: str) -> sp.Expr:
         if variable == "t":
-            return S.time_derivative(sp.sympify(expr), self.chain)
+            return S.time_derivative(as_expr(expr), self.chain)
         if variable in self.coordinates:
             return sp.diff(expr, S.value(variable))
         return sp.S.Zero  # a quasi-coordinate has no value for a coefficient to depend on
@@ -184,7 +185,7 @@ def _all_zero(components) -> Decision:
 
 def decide_zero(expr, seed: int = _SEED) -> Decision:
     """Is ``expr`` identically zero? simplify() when small, else random points."""
-    expr = sp.sympify(expr)
+    expr = as_expr(expr)
     if expr == 0:
         return Decision(True, "symbolic")
     if expr.is_Number:
@@ -308,7 +309,7 @@ def evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> tuple[mpmath.mp
     """
     with mpmath.workdps(_DIGITS):
         try:
-            return _Evaluator(point).value(sp.sympify(expr))
+            return _Evaluator(point).value(as_expr(expr))
         except (ZeroDivisionError, OverflowError, ValueError, TypeError, RecursionError) as exc:
             if isinstance(exc, UndefinedValue):
                 raise

@@ -13,18 +13,35 @@ from pathlib import Path
 
 import sympy as sp
 
+from gacli import frames as F
 from gacli import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
 from gacli.model import (
-    Body, Constraint, Coordinate, Force, Form, Function, Input, Parameter,
-    QuasiCoordinate, System, Torque,
+    Body,
+    Constraint,
+    Coordinate,
+    Force,
+    Form,
+    Function,
+    Input,
+    Parameter,
+    QuasiCoordinate,
+    System,
+    Torque,
 )
-from gacli import frames as F
 from gacli.schema import (
-    BodyDecl, FrameDecl, LoadDecl, RollingDecl, SymbolDecl, SystemDecl, VectorDecl,
-    VelocityConstraintDecl, did_you_mean, read_declarations,
+    BodyDecl,
+    FrameDecl,
+    LoadDecl,
+    RollingDecl,
+    SymbolDecl,
+    SystemDecl,
+    VectorDecl,
+    VelocityConstraintDecl,
+    did_you_mean,
+    read_declarations,
 )
 from gacli.source import Scalar, SourceFile, parse_source, read_source
 

@@ -16,6 +16,7 @@ from gacli.equations import Derivation
 from gacli.readable import Tidy, show
 from gacli.symbols import rate_name
 
+
 @dataclass(frozen=True)
 class Section:
     title: str

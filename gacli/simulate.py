@@ -47,6 +47,7 @@ import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.coerce import as_expr
 from gacli.equations import Derivation
 from gacli.errors import GacliError
 from gacli.expr.build import BuildError, Scope, build
@@ -396,7 +397,7 @@ class _Problem:
         replace = {S.rate(c.name): d for c, d in zip(system.coordinates, fd)}
         replace.update({S.rate(q.name): rates.rate(q.name) for q in system.quasi_coordinates})
         expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
-        return sp.sympify(expr).xreplace(replace).xreplace(self.functions), fd
+        return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
 
 
 def _arguments(state: Sequence[str], parameters: Sequence[str]) -> list[sp.Symbol]:
@@ -663,7 +664,7 @@ def _moves_with_time(motion) -> bool:
 
 
 def _free(*exprs) -> set[sp.Symbol]:
-    return set().union(*(sp.sympify(e).free_symbols for e in exprs)) if exprs else set()
+    return set().union(*(as_expr(e).free_symbols for e in exprs)) if exprs else set()
 
 
 def _parameter_symbols(system) -> set[sp.Symbol]:

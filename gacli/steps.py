@@ -19,7 +19,6 @@ from gacli.gibbs import acceleration_chain, gibbs_coefficients
 from gacli.readable import STEP_BUDGET_OPS, Tidy
 
 
-
 @dataclass(frozen=True)
 class Equation:
     lhs: sp.Expr

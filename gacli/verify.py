@@ -288,7 +288,7 @@ class _Compiled:
         self.shapes = {k: (m.rows, m.cols) for k, m in matrices.items()}
         flat: list[sp.Expr] = []
         for m in matrices.values():
-            flat.extend(sp.sympify(e) for e in m)
+            flat.extend(m)
         try:
             program = _Program(flat)
             self.symbols = program.symbols

@@ -27,8 +27,16 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.emit.naming import (
-    Entry, Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
-    lower_triangle, mass_matrix_equations, reaction_equations,
+    Entry,
+    Layout,
+    forcing_equations,
+    header_lines,
+    kinematic_equations,
+    layout,
+    lower_mass_matrix_equations,
+    lower_triangle,
+    mass_matrix_equations,
+    reaction_equations,
 )
 from gacli.emit.printers import Block, GacliCPrinter, print_block
 from gacli.equations import Derivation

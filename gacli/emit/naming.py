@@ -70,6 +70,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.coerce import as_expr
 from gacli.equations import Derivation
 from gacli.errors import EmitError
 
@@ -249,7 +250,7 @@ def parameter_defaults(parameters) -> dict[str, float]:
     for parameter in parameters:
         if parameter.value is None:
             continue
-        value = sp.sympify(parameter.value).xreplace(exact)
+        value = as_expr(parameter.value).xreplace(exact)
         number = _finite(value)
         if number is not None:
             exact[S.value(parameter.name)] = value

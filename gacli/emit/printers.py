@@ -27,6 +27,7 @@ from sympy.printing.c import C99CodePrinter
 from sympy.printing.codeprinter import PrintMethodNotImplementedError
 from sympy.printing.pycode import PythonCodePrinter
 
+from gacli.coerce import as_expr
 from gacli.errors import EmitError
 
 # What generated code may depend on.
@@ -130,7 +131,7 @@ def print_code(printer, expr: sp.Expr, where: Callable[[sp.Basic], str] | str) -
 def locate(node: sp.Basic, equations: Iterable[tuple[str, sp.Expr]]) -> str:
     """The name of the first equation that holds ``node``."""
     for name, expr in equations:
-        if sp.sympify(expr).has(node):
+        if as_expr(expr).has(node):
             return name
     return "an equation"
 
@@ -161,7 +162,7 @@ def print_block(printer_class, names: Mapping[sp.Symbol, str],
     The printer is returned so that callers can read what the code needs
     (``imports()``, ``includes()``).
     """
-    exprs = [sp.sympify(expr) for _, expr in equations]
+    exprs = [as_expr(expr) for _, expr in equations]
     replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(CSE_PREFIX), order="canonical")
     printer = printer_class({**names, **{sym: sym.name for sym, _ in replacements}})
     where = functools.partial(locate, equations=equations)

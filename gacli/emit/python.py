@@ -27,8 +27,14 @@ from string import Template
 import sympy as sp
 
 from gacli.emit.naming import (
-    Layout, forcing_equations, header_lines, kinematic_equations, layout, lower_mass_matrix_equations,
-    mass_matrix_equations, reaction_equations,
+    Layout,
+    forcing_equations,
+    header_lines,
+    kinematic_equations,
+    layout,
+    lower_mass_matrix_equations,
+    mass_matrix_equations,
+    reaction_equations,
 )
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.equations import Derivation
