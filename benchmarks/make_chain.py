@@ -28,8 +28,9 @@ Usage::
 
 from __future__ import annotations
 
-import argparse
 from pathlib import Path
+
+from make_pendulum import generator_main, write_system
 
 
 def chain_name(n: int) -> str:
@@ -96,19 +97,11 @@ def chain_yaml(n: int) -> str:
 
 
 def write_chain(n: int, directory: Path) -> Path:
-    directory.mkdir(parents=True, exist_ok=True)
-    path = directory / f"{chain_name(n)}.yaml"
-    path.write_text(chain_yaml(n), encoding="utf-8")
-    return path
+    return write_system(chain_name(n), chain_yaml(n), directory)
 
 
 def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("sizes", type=int, nargs="+", help="numbers of links")
-    parser.add_argument("--out", type=Path, required=True, help="directory for the files")
-    args = parser.parse_args(argv)
-    for n in args.sizes:
-        print(write_chain(n, args.out))
+    generator_main(__doc__.splitlines()[0], write_chain, argv)
 
 
 if __name__ == "__main__":

@@ -59,20 +59,30 @@ def pendulum_yaml(n: int) -> str:
     return "\n".join(lines)
 
 
-def write_pendulum(n: int, directory: Path) -> Path:
+def write_system(name: str, text: str, directory: Path) -> Path:
+    """Write one generated system file; shared with make_chain.py."""
     directory.mkdir(parents=True, exist_ok=True)
-    path = directory / f"{pendulum_name(n)}.yaml"
-    path.write_text(pendulum_yaml(n), encoding="utf-8")
+    path = directory / f"{name}.yaml"
+    path.write_text(text, encoding="utf-8")
     return path
 
 
-def main(argv: list[str] | None = None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def write_pendulum(n: int, directory: Path) -> Path:
+    return write_system(pendulum_name(n), pendulum_yaml(n), directory)
+
+
+def generator_main(description: str, write, argv: list[str] | None = None) -> None:
+    """``script SIZES... --out DIR``: write one file per size, print their paths."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("sizes", type=int, nargs="+", help="numbers of links")
     parser.add_argument("--out", type=Path, required=True, help="directory for the files")
     args = parser.parse_args(argv)
     for n in args.sizes:
-        print(write_pendulum(n, args.out))
+        print(write(n, args.out))
+
+
+def main(argv: list[str] | None = None) -> None:
+    generator_main(__doc__.splitlines()[0], write_pendulum, argv)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ back as an expression.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping
 
 import sympy as sp
 
@@ -44,15 +44,6 @@ def differential(name: str) -> sp.Symbol:
 
 
 DT = differential("t")
-
-
-def derivative_chain(names: Iterable[str], orders: int = 2) -> dict[sp.Symbol, sp.Symbol]:
-    """Map each symbol of order j to its time derivative of order j + 1."""
-    chain: dict[sp.Symbol, sp.Symbol] = {}
-    for name in names:
-        for order in range(orders):
-            chain[rate(name, order)] = rate(name, order + 1)
-    return chain
 
 
 def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Expr:
