@@ -48,7 +48,7 @@ from gacli.integrability import (
 )
 from gacli.loading import load_source
 from gacli.model import System
-from gacli.numeric import free_symbols
+from gacli.graph import free_symbols, postorder
 from gacli.source import read_source
 
 DEFAULT_TIMEOUT = 60.0
@@ -371,7 +371,7 @@ def _check_mass_matrix(derivation: Derivation, findings: _Findings) -> MassMatri
     M, F = derivation.mass_matrix, derivation.forcing
     system = derivation.system
     where = system.location
-    if any(M.has(u) for u in _UNDEFINED) or any(F.has(u) for u in _UNDEFINED):
+    if any(node in _UNDEFINED for node in postorder([*M, *F])):
         findings.error("the equations contain an undefined value (zoo or nan: a division by zero or a "
                        "logarithm of zero somewhere in the file)", "equations", location=where)
     symmetric = _symmetric(M, findings, where)
@@ -411,7 +411,7 @@ def parameter_values(system: System) -> tuple[dict[sp.Symbol, float], list[str]]
 
 
 def _positive_definite(M, values, symmetric, findings: _Findings, where: Location) -> MassMatrixCheck:
-    others = sorted(M.free_symbols - set(values), key=lambda s: s.name)
+    others = sorted(free_symbols(M) - set(values), key=lambda s: s.name)
     evaluated = 0
     for point in sample_points(others, PD_SAMPLES):
         state = {**values, **point}

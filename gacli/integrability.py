@@ -328,12 +328,21 @@ _EXPONENTIAL = (sp.exp, sp.sinh, sp.cosh)
 class _Evaluator:
     def __init__(self, point: Mapping[sp.Symbol, float]) -> None:
         self.point = point
+        # Derived expressions share subexpressions (the bicycle's are millions of
+        # nodes as trees): each distinct one is evaluated once.
+        self.memo: dict[sp.Basic, tuple[mpmath.mpf, mpmath.mpf]] = {}
 
     def value(self, expr: sp.Expr) -> tuple[mpmath.mpf, mpmath.mpf]:
         value, scale = self._node(expr)
         return value, max(scale, abs(value))
 
     def _node(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
+        known = self.memo.get(expr)
+        if known is None:
+            known = self.memo[expr] = self._evaluate(expr)
+        return known
+
+    def _evaluate(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
         if expr.is_Symbol:
             if expr not in self.point:
                 raise UndefinedValue(f"no value for {expr}")

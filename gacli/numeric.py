@@ -15,6 +15,7 @@ from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
+
 _FUNCTIONS = {
     sp.sin: cmath.sin, sp.cos: cmath.cos, sp.tan: cmath.tan, sp.asin: cmath.asin, sp.acos: cmath.acos,
     sp.atan: cmath.atan, sp.sinh: cmath.sinh, sp.cosh: cmath.cosh, sp.tanh: cmath.tanh,
@@ -92,24 +93,3 @@ def _atan2(y: complex, x: complex) -> complex:
     """atan2 with the first-order complex part, so that the complex step sees its derivative."""
     real = cmath.phase(complex(x.real, y.real))
     return complex(real, (x.real * y.imag - y.real * x.imag) / (x.real ** 2 + y.real ** 2))
-
-
-def free_symbols(exprs: Sequence[sp.Basic]) -> set[sp.Symbol]:
-    """The symbols in the expressions, visiting each distinct subexpression once.
-
-    SymPy's ``free_symbols`` recomputes for every occurrence of a shared
-    subexpression, which on a large derivation is the size of the printed tree.
-    """
-    seen: set[sp.Basic] = set()
-    found: set[sp.Symbol] = set()
-    stack = list(exprs)
-    while stack:
-        node = stack.pop()
-        if node in seen:
-            continue
-        seen.add(node)
-        if node.is_Symbol:
-            found.add(node)
-        else:
-            stack.extend(a for a in node.args if a not in seen)
-    return found

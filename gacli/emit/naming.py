@@ -207,7 +207,7 @@ def layout(derivation: Derivation) -> Layout:
 
 
 def _used_symbols(derivation: Derivation) -> set[sp.Symbol]:
-    from gacli.numeric import free_symbols
+    from gacli.graph import free_symbols
 
     exprs = [*derivation.mass_matrix, *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
     return free_symbols(exprs)

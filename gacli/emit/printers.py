@@ -28,6 +28,8 @@ from sympy.printing.codeprinter import PrintMethodNotImplementedError
 from sympy.printing.pycode import PythonCodePrinter
 
 from gacli.coerce import as_expr
+from gacli.graph import free_symbols, shared_subexpressions
+from gacli.symbols import is_small
 from gacli.errors import EmitError
 
 # What generated code may depend on.
@@ -153,6 +155,8 @@ class Block:
 
 
 CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
+# Above this many tree nodes in one equation, CSE walks the graph (gacli.graph).
+_CANONICAL_CSE_LIMIT = 20_000
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
@@ -163,10 +167,15 @@ def print_block(printer_class, names: Mapping[sp.Symbol, str],
     (``imports()``, ``includes()``).
     """
     exprs = [as_expr(expr) for _, expr in equations]
-    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(CSE_PREFIX), order="canonical")
+    names_of_temporaries = sp.numbered_symbols(CSE_PREFIX)
+    if all(is_small(e, _CANONICAL_CSE_LIMIT) for e in exprs):
+        replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
+    else:
+        # SymPy's canonical ordering counts tree nodes; the bicycle's trees are millions.
+        replacements, reduced = shared_subexpressions(exprs, names_of_temporaries)
     printer = printer_class({**names, **{sym: sym.name for sym, _ in replacements}})
     where = functools.partial(locate, equations=equations)
     temporaries = tuple((sym.name, print_code(printer, value, where)) for sym, value in replacements)
     results = tuple(print_code(printer, expr, where) for expr in reduced)
-    symbols = frozenset().union(*(e.free_symbols for e in exprs))
+    symbols = frozenset(free_symbols(exprs))
     return Block(temporaries, results, symbols), printer

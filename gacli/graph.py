@@ -1,0 +1,79 @@
+"""Walks of SymPy expressions as graphs: each distinct subexpression visited once.
+
+Derived expressions share their subexpressions (a solved rate appears in
+every velocity of the Whipple bicycle), so as trees they can be millions of
+nodes while the distinct subexpressions stay a few thousand. SymPy's
+``free_symbols``, ``count_ops`` and the canonical ordering inside ``cse`` walk
+the trees; the functions here walk the graph.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Sequence
+
+import sympy as sp
+
+
+def postorder(exprs: Iterable[sp.Basic]) -> Iterator[sp.Basic]:
+    """Each distinct subexpression once, arguments before the expression, in argument order."""
+    seen: set[sp.Basic] = set()
+    for root in exprs:
+        if root in seen:
+            continue
+        stack: list[tuple[sp.Basic, bool]] = [(root, False)]
+        while stack:
+            node, expanded = stack.pop()
+            if expanded:
+                yield node
+                continue
+            if node in seen:
+                continue
+            seen.add(node)
+            stack.append((node, True))
+            stack.extend((a, False) for a in reversed(node.args) if a not in seen)
+
+
+def free_symbols(exprs: Sequence[sp.Basic]) -> set[sp.Symbol]:
+    """The symbols in the expressions (SymPy's ``free_symbols`` recomputes per occurrence)."""
+    return {node for node in postorder(exprs) if node.is_Symbol}
+
+
+def shared_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol]
+                          ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[sp.Expr]]:
+    """Common-subexpression elimination in one walk of the graph: ``(replacements, reduced)``.
+
+    Every compound subexpression used more than once is named, in the order
+    of a post-order walk (so a name is defined before it is used, and the
+    order depends only on the expressions' argument order, never on hashes).
+    It is what ``sympy.cse`` finds first, without its canonical sorting of
+    arguments, whose node counts walk the trees.
+    """
+    uses: dict[sp.Basic, int] = {}
+    order = list(postorder(exprs))
+    for node in order:
+        for a in node.args:
+            uses[a] = uses.get(a, 0) + 1
+    for root in exprs:
+        uses[root] = uses.get(root, 0) + 1
+    rebuilt: dict[sp.Basic, sp.Basic] = {}
+    replacements: list[tuple[sp.Symbol, sp.Expr]] = []
+    for node in order:
+        if not node.args:
+            rebuilt[node] = node
+            continue
+        args = [rebuilt[a] for a in node.args]
+        new = node.func(*args) if any(n is not o for n, o in zip(args, node.args)) else node
+        if uses[node] > 1 and not _trivial(new):
+            name = next(symbols)
+            replacements.append((name, new))
+            new = name
+        rebuilt[node] = new
+    return replacements, [rebuilt[e] for e in exprs]
+
+
+def _trivial(expr: sp.Basic) -> bool:
+    """Not worth a name: an atom, or minus an atom."""
+    if not expr.args:
+        return True
+    return expr.is_Mul and len(expr.args) == 2 and expr.args[0] == -1 and not expr.args[1].args
+

@@ -1,0 +1,51 @@
+"""Walks over distinct subexpressions (gacli.graph), checked against SymPy's tree walks."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.graph import free_symbols, postorder, shared_subexpressions
+
+
+def _nested(depth: int) -> sp.Expr:
+    """An expression whose tree doubles with each level while its graph grows by a few nodes."""
+    x, y = sp.symbols("x y")
+    e = sp.sin(x) + y
+    for i in range(depth):
+        e = sp.cos(e) * e + sp.Symbol(f"a{i}")
+    return e
+
+
+def test_postorder_visits_each_distinct_node_once_arguments_first():
+    e = _nested(6)
+    order = list(postorder([e, e]))
+    assert len(order) == len(set(order))
+    position = {node: i for i, node in enumerate(order)}
+    assert all(position[a] < position[node] for node in order for a in node.args)
+    assert set(order) == set(sp.preorder_traversal(e))
+
+
+def test_free_symbols_match_sympy():
+    e = _nested(5)
+    assert free_symbols([e, sp.Symbol("z")]) == e.free_symbols | {sp.Symbol("z")}
+
+
+def test_shared_subexpressions_rebuild_the_expressions():
+    exprs = [_nested(5), _nested(3) * sp.Symbol("w")]
+    replacements, reduced = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
+    assert replacements  # the nested cosines are shared
+    names = [s for s, _ in replacements]
+    for i, (_, value) in enumerate(replacements):
+        # defined before use
+        assert not (value.free_symbols & set(names[i:]))
+    rebuilt = reduced
+    for name, value in reversed(replacements):
+        rebuilt = [e.xreplace({name: value}) for e in rebuilt]
+    assert all(sp.expand(a - b) == 0 for a, b in zip(rebuilt, exprs))
+
+
+def test_shared_subexpressions_are_deterministic():
+    exprs = [_nested(6)]
+    first = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
+    again = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
+    assert first == again
