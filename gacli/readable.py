@@ -18,6 +18,15 @@ SIMPLIFY_OPS = 250
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
+# An equation of motion larger than this many tree nodes is not printed for
+# people: the Whipple bicycle's are millions (a few thousand distinct
+# subexpressions, which the code emitters share); the largest textbook and
+# shipped systems stay under 3,000.
+DISPLAY_NODES = 20_000
+TOO_LARGE = ("The equations of this system are too large to print for reading "
+             f"(an entry of M or F has more than {DISPLAY_NODES:,} terms as a tree). "
+             "Generate code instead, which shares their common subexpressions: "
+             "--format python or --format c.")
 
 
 @dataclass
@@ -46,6 +55,11 @@ class Tidy:
         for key in sorted(parts, key=sp.default_sort_key):
             total += self(parts[key]) * key
         return total
+
+
+def displayable(d) -> bool:
+    """Whether the derivation's M and F are small enough to print as formulas."""
+    return all(is_small(e, DISPLAY_NODES) for e in (*d.mass_matrix, *d.forcing))
 
 
 def show(expr) -> str:

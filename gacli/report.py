@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.equations import Derivation
-from gacli.readable import Tidy, show
+from gacli.readable import TOO_LARGE, Tidy, displayable, show
 from gacli.symbols import rate_name
 
 
@@ -70,12 +70,20 @@ def kinematic(d: Derivation, tidy: Tidy) -> Section:
     return Section("Kinematic equations, eq. (14.20)", tuple(lines))
 
 
+def too_large() -> Section:
+    return Section("Equations", (TOO_LARGE,))
+
+
 def derivation_report(d: Derivation) -> tuple[Section, ...]:
     """The results of the chapter's solution procedure (section 14.3)."""
+    if not displayable(d):
+        return (freedom(d), too_large())
     return (freedom(d), rates(d, Tidy()), gibbs(d, Tidy()), forces(d, Tidy()), equations(d, Tidy()), kinematic(d, Tidy()))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
+    if not displayable(d):
+        return (too_large(),)
     return (gibbs(d, Tidy()),)
 
 
@@ -83,6 +91,8 @@ def steps_report(d: Derivation) -> tuple[Section, ...]:
     """The worked solution (:mod:`gacli.steps`) as text sections."""
     from gacli.steps import Equation, worked_solution
 
+    if not displayable(d):
+        return (freedom(d), too_large())
     def line(item) -> str:
         if isinstance(item, Equation):
             return f"{_side(item.lhs)} = {_side(item.rhs)}"

@@ -41,3 +41,24 @@ def require_tool(name: str) -> str:
             pytest.fail(f"{name} is required in CI (.ci/run installs it)")
         pytest.skip(f"{name} is not installed")
     return path
+
+
+# Shipped systems whose equations are too large to print for reading
+# (gacli.readable.DISPLAY_NODES); tests/test_readable.py checks this list.
+LARGE = frozenset({"whipple_bicycle"})
+
+
+def evaluate(exprs, values):
+    """Float values of the expressions at ``values``: SymPy's evalf at 30 digits, or for
+    the large systems a double-precision walk of their distinct subexpressions (evalf
+    on the printed trees of the bicycle would take hours)."""
+    import numpy as np
+    import sympy as sp
+
+    from gacli.numeric import Program
+    from gacli.symbols import is_small
+
+    exprs = list(exprs)
+    if all(is_small(e, 20_000) for e in exprs):
+        return np.array([complex(v) for v in sp.Matrix(exprs).xreplace(values).evalf(30)], dtype=complex).real
+    return np.array(Program(exprs)({s: complex(v) for s, v in values.items()})).real

@@ -1,6 +1,6 @@
 """The Whipple bicycle benchmark (Meijaard, Papadopoulos, Ruina and Schwab 2007).
 
-benchmarks/cases/whipple_bicycle.yaml is written with the frame and rolling
+systems/whipple_bicycle.yaml is written with the frame and rolling
 vocabulary; linearized at upright, straight-ahead motion it must give the
 benchmark's linear equations. The reference is the matrix SymPy's own bicycle
 test (test_kane3.py) holds from the paper, for the states roll, steer and
@@ -17,7 +17,7 @@ import sympy as sp
 
 from conftest import ROOT
 
-BICYCLE = ROOT / "benchmarks" / "cases" / "whipple_bicycle.yaml"
+BICYCLE = ROOT / "systems" / "whipple_bicycle.yaml"
 STATES = ["roll", "steer", "dot(roll)", "dot(steer)"]
 REAR_RADIUS = 0.3
 # The paper's weave and capsize speeds (m/s).

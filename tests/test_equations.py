@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from conftest import SYSTEMS, derived
+from conftest import LARGE, SYSTEMS, derived, evaluate
 from gacli.gibbs import gibbs_coefficients
+from gacli.graph import free_symbols
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 
@@ -20,7 +21,7 @@ def numeric(expr, values) -> np.ndarray:
     return np.array(sp.Matrix(expr).xreplace(values).evalf(30).tolist(), dtype=float)
 
 
-@pytest.mark.parametrize("name", ALL)
+@pytest.mark.parametrize("name", [n for n in ALL if n not in LARGE])
 def test_gibbs_function_yields_the_equations(name, rng):
     """∂G/∂u̇_s of the displayed G equals M u̇ + (Q − F) from the direct route."""
     d = derived(name)
@@ -39,10 +40,13 @@ def test_gibbs_function_yields_the_equations(name, rng):
 def test_mass_matrix_symmetric_positive_definite(name, rng):
     d = derived(name)
     M = d.mass_matrix
-    assert sp.simplify(M - M.T) == sp.zeros(*M.shape)
+    if name not in LARGE:
+        assert sp.simplify(M - M.T) == sp.zeros(*M.shape)
     for _ in range(5):
-        values = random_values(M.free_symbols, rng)
-        assert np.all(np.linalg.eigvalsh(numeric(M, values)) > 0)
+        values = random_values(free_symbols(M), rng)
+        at = evaluate(M, values).reshape(M.shape)
+        assert np.allclose(at, at.T, rtol=1e-13, atol=0)
+        assert np.all(np.linalg.eigvalsh(at) > 0)
 
 
 def _top_lagrangian_accelerations():

@@ -18,7 +18,7 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from conftest import SYSTEMS, derived
+from conftest import SYSTEMS, derived, evaluate
 from gacli import symbols as S
 from gacli.emit.naming import layout
 from test_emit_c import COMPILERS, CLibrary, compile_c
@@ -52,19 +52,17 @@ def random_states(d, seed):
 
 
 def sympy_values(d, t, x, p, r):
-    """M, F and [q', u'] by substituting the floats into the derivation itself (30 digits)."""
+    """M, F and [q', u'] by substituting the floats into the derivation itself (30 digits, see evaluate)."""
     lay = layout(d)
     values = {S.T: sp.Float(t, 30)}
     for symbols, numbers in ((lay.state_symbols, x), (lay.parameter_symbols, p), (lay.r_symbols, r)):
         values.update({s: sp.Float(v, 30) for s, v in zip(symbols, numbers)})
 
-    def exact(matrix):
-        return sp.Matrix(matrix).xreplace(values).evalf(30)
-
-    M, F = exact(d.mass_matrix), exact(d.forcing)
-    qdot, udot = exact([e for _, e in d.kinematic_equations]), M.LUsolve(F)
-    as_float = lambda m: np.array(m.tolist(), dtype=float)  # noqa: E731
-    return as_float(M), as_float(F).ravel(), np.concatenate([as_float(qdot).ravel(), as_float(udot).ravel()])
+    k = d.k
+    M = evaluate(d.mass_matrix, values).reshape(k, k)
+    F = evaluate(d.forcing, values)
+    qdot = evaluate([e for _, e in d.kinematic_equations], values)
+    return M, F, np.concatenate([qdot, np.linalg.solve(M, F)])
 
 
 def rhs_agrees(value, M, F, xdot, n) -> bool:

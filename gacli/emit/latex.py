@@ -25,6 +25,7 @@ from gacli import symbols as S
 from gacli.equations import Derivation
 from gacli.gibbs import gibbs_coefficients
 from gacli.model import System
+from gacli.readable import TOO_LARGE, displayable
 
 # `sympy.simplify` runs only below this many operations (it is slow and
 # superlinear); bigger expressions are first reduced with cancel/factor_terms.
@@ -118,18 +119,18 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     """
     system = derivation.system
     printer = GacliLatexPrinter(latex_names(system), {"fold_func_brackets": True})
-    if steps:
+    if not displayable(derivation):
+        sections = [_Section("Equations", _text(TOO_LARGE), [])]
+    elif steps:
         sections = _step_sections(derivation)
-        lines = _header(system)
-        lines += _document(system, sections) if standalone else _fragment(sections)
-        return {f"{system.name}.tex": "\n".join(lines) + "\n"}
-    sections = [
-        _Section("Gibbs function (eq. 14.21)", _GIBBS_NOTE, [_gibbs_rows(derivation, printer)]),
-        _Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer)),
-        _Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer),
-                 _equation_rows(derivation, printer), gap="[1ex]"),
-        _Section("Kinematic equations (eq. 14.20)", "", _kinematic_rows(derivation, printer)),
-    ]
+    else:
+        sections = [
+            _Section("Gibbs function (eq. 14.21)", _GIBBS_NOTE, [_gibbs_rows(derivation, printer)]),
+            _Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer)),
+            _Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer),
+                     _equation_rows(derivation, printer), gap="[1ex]"),
+            _Section("Kinematic equations (eq. 14.20)", "", _kinematic_rows(derivation, printer)),
+        ]
     lines = _header(system)
     lines += _document(system, sections) if standalone else _fragment(sections)
     return {f"{system.name}.tex": "\n".join(lines) + "\n"}

@@ -1,0 +1,33 @@
+"""What is printed for people: the display limit for very large equations."""
+
+from __future__ import annotations
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import LARGE, SYSTEMS, derived
+from gacli.cli import app
+from gacli.readable import TOO_LARGE, displayable
+
+ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_only_the_listed_systems_are_too_large_to_display(name):
+    assert displayable(derived(name)) == (name not in LARGE)
+
+
+@pytest.mark.parametrize("args", [["derive"], ["derive", "--steps"], ["gibbs"], ["derive", "--format", "latex"]])
+def test_a_large_system_says_so_instead_of_printing(args):
+    name = "whipple_bicycle"
+    result = CliRunner().invoke(app, [args[0], str(SYSTEMS / f"{name}.yaml"), *args[1:]])
+    assert result.exit_code == 0, result.output
+    text = " ".join(result.output.split())
+    assert "--format python or --format c" in text
+    assert len(result.output) < 5_000
+    if args == ["derive"]:
+        assert "k = n + p - d - l = 8 + 0 - 0 - 5 = 3" in text
+
+
+def test_the_note_names_the_limit():
+    assert "20,000" in TOO_LARGE
