@@ -14,6 +14,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.fastdiff import gradient
+from gacli.graph import substitute
 from gacli.kinematics import BodyMotion, Rates, point_partials, product
 from gacli.model import System
 
@@ -26,7 +27,7 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     Q += _from_work(system, rates)
     Q += _from_potential(system, rates)
     substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    return sp.ImmutableMatrix(Q.xreplace(substitution))
+    return sp.ImmutableMatrix(Q.rows, 1, substitute(list(Q), substitution))
 
 
 def _from_forces(system: System, rates: Rates) -> sp.Matrix:

@@ -9,7 +9,7 @@ the trees; the functions here walk the graph.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 import sympy as sp
 
@@ -77,3 +77,18 @@ def _trivial(expr: sp.Basic) -> bool:
         return True
     return expr.is_Mul and len(expr.args) == 2 and expr.args[0] == -1 and not expr.args[1].args
 
+
+
+def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic]) -> list[sp.Basic]:
+    """``xreplace`` over the graph: each distinct subexpression rebuilt once."""
+    rebuilt: dict[sp.Basic, sp.Basic] = {}
+    for node in postorder(exprs):
+        if node in mapping:
+            rebuilt[node] = mapping[node]
+        elif node.args:
+            args = [rebuilt[a] for a in node.args]
+            changed = any(n is not o for n, o in zip(args, node.args))
+            rebuilt[node] = node.func(*args) if changed else node
+        else:
+            rebuilt[node] = node
+    return [rebuilt[e] for e in exprs]

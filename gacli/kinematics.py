@@ -241,7 +241,49 @@ def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
         return B / A[0, 0]
     if A.rows > _ADJUGATE_MAX:
         return A.LUsolve(B)
-    return (A.adjugate(method="berkowitz") * B) / A.det(method="berkowitz")
+    minor = _minors(A)
+    everything = tuple(range(A.rows))
+    det = minor(everything, everything)
+
+    def entry(i: int, c: int) -> sp.Expr:
+        # (adj A)_ij = (-1)^(i+j) det(A without row j and column i)
+        terms = [(-1) ** (i + j) * minor(_without(everything, j), _without(everything, i)) * B[j, c]
+                 for j in range(A.rows) if B[j, c] != 0]
+        return sp.Add(*terms) / det
+
+    return sp.Matrix(A.rows, B.cols, entry)
+
+
+def _without(indices: tuple[int, ...], i: int) -> tuple[int, ...]:
+    return tuple(j for j in indices if j != i)
+
+
+def _minors(A: sp.Matrix):
+    """det of the submatrix on (rows, columns), by Laplace expansion along the first row.
+
+    Memoised over the submatrices, skipping zero entries: the constraint
+    matrices are sparse, and SymPy's Berkowitz determinant goes through its
+    matrix product, which multiplies the zeros too (0·expr asks whether expr
+    is finite, a walk of the whole tree).
+    """
+    memo: dict[tuple[tuple[int, ...], tuple[int, ...]], sp.Expr] = {}
+
+    def det(rows: tuple[int, ...], columns: tuple[int, ...]) -> sp.Expr:
+        if not rows:
+            return sp.S.One
+        known = memo.get((rows, columns))
+        if known is None:
+            terms = []
+            for position, c in enumerate(columns):
+                a = A[rows[0], c]
+                if a != 0:
+                    rest = det(rows[1:], columns[:position] + columns[position + 1:])
+                    if rest != 0:
+                        terms.append((-1) ** position * a * rest)
+            known = memo[(rows, columns)] = sp.Add(*terms)
+        return known
+
+    return det
 
 
 _ADJUGATE_MAX = 6
