@@ -142,4 +142,71 @@ def rolling_disk() -> KaneModel:
     return KaneModel(kane, q, [u1, u2, u3], [u4, u5], {"m": m, "r": r, "g": g}, constraints)
 
 
+def whipple_bicycle() -> KaneModel:
+    """The Whipple bicycle as SymPy's own bicycle test builds it (test_kane3.py, after Autolev).
+
+    Coordinates q1 (yaw), q2 (roll), q4 (pitch), q5 (steer) are
+    systems/whipple_bicycle.yaml's yaw, roll, pitch and steer; u3 and u6 are
+    the wheels' rates relative to the frame and the fork, that is
+    dot(wheel_R) and dot(wheel_F). The wheel angles and the rear contact
+    point (x, y) are ignorable there and not introduced; the rear contact is
+    set at rest, the front contact's velocity is constrained to zero.
+    """
+    q1, q2, q4, q5 = me.dynamicsymbols("q1 q2 q4 q5")
+    q1d, q2d, q4d, q5d = me.dynamicsymbols("q1 q2 q4 q5", 1)
+    u1, u2, u3, u4, u5, u6 = me.dynamicsymbols("u1:7")
+    names = ("WFrad WRrad htangle forkoffset forklength framelength forkcg1 forkcg3 framecg1 framecg3 "
+             "Iwr11 Iwr22 Iwf11 Iwf22 Iframe11 Iframe22 Iframe33 Iframe31 Ifork11 Ifork22 Ifork33 Ifork31 "
+             "g mframe mfork mwf mwr")
+    P = dict(zip(names.split(), sp.symbols(names)))
+    N = me.ReferenceFrame("N")
+    Y = N.orientnew("Y", "Axis", [q1, N.z])
+    R = Y.orientnew("R", "Axis", [q2, Y.x])
+    Frame = R.orientnew("Frame", "Axis", [q4 + P["htangle"], R.y])
+    WR = me.ReferenceFrame("WR")
+    TempFrame = Frame.orientnew("TempFrame", "Axis", [-P["htangle"], Frame.y])
+    Fork = Frame.orientnew("Fork", "Axis", [q5, Frame.x])
+    TempFork = Fork.orientnew("TempFork", "Axis", [-P["htangle"], Fork.y])
+    WF = me.ReferenceFrame("WF")
+    WR_cont = me.Point("WR_cont")
+    WR_mc = WR_cont.locatenew("WR_mc", P["WRrad"] * R.z)
+    Steer = WR_mc.locatenew("Steer", P["framelength"] * Frame.z)
+    Frame_mc = WR_mc.locatenew("Frame_mc", -P["framecg1"] * Frame.x + P["framecg3"] * Frame.z)
+    Fork_mc = Steer.locatenew("Fork_mc", -P["forkcg1"] * Fork.x + P["forkcg3"] * Fork.z)
+    WF_mc = Steer.locatenew("WF_mc", P["forklength"] * Fork.x + P["forkoffset"] * Fork.z)
+    WF_cont = WF_mc.locatenew("WF_cont", P["WFrad"] * (me.dot(Fork.y, Y.z) * Fork.y - Y.z).normalize())
+    Y.set_ang_vel(N, u1 * Y.z)
+    R.set_ang_vel(Y, u2 * R.x)
+    WR.set_ang_vel(Frame, u3 * Frame.y)
+    Frame.set_ang_vel(R, u4 * Frame.y)
+    Fork.set_ang_vel(Frame, u5 * Fork.x)
+    WF.set_ang_vel(Fork, u6 * Fork.y)
+    WR_cont.set_vel(N, 0)
+    WR_mc.v2pt_theory(WR_cont, N, WR)
+    Steer.v2pt_theory(WR_mc, N, Frame)
+    Frame_mc.v2pt_theory(WR_mc, N, Frame)
+    Fork_mc.v2pt_theory(Steer, N, Fork)
+    WF_mc.v2pt_theory(Steer, N, Fork)
+    WF_cont.v2pt_theory(WF_mc, N, WF)
+    frame_inertia = me.inertia(TempFrame, P["Iframe11"], P["Iframe22"], P["Iframe33"], 0, 0, P["Iframe31"])
+    fork_inertia = me.inertia(TempFork, P["Ifork11"], P["Ifork22"], P["Ifork33"], 0, 0, P["Ifork31"])
+    bodies = [
+        me.RigidBody("BodyFrame", Frame_mc, Frame, P["mframe"], (frame_inertia, Frame_mc)),
+        me.RigidBody("BodyFork", Fork_mc, Fork, P["mfork"], (fork_inertia, Fork_mc)),
+        me.RigidBody("BodyWR", WR_mc, WR, P["mwr"], (me.inertia(Frame, P["Iwr11"], P["Iwr22"], P["Iwr11"]), WR_mc)),
+        me.RigidBody("BodyWF", WF_mc, WF, P["mwf"], (me.inertia(Fork, P["Iwf11"], P["Iwf22"], P["Iwf11"]), WF_mc)),
+    ]
+    kd = [q1d - u1, q2d - u2, q4d - u4, q5d - u5]
+    speed_constraints = [WF_cont.vel(N) & Y.x, WF_cont.vel(N) & Y.y, WF_cont.vel(N) & Y.z]
+    g = P["g"]
+    loads = [(Frame_mc, -P["mframe"] * g * Y.z), (Fork_mc, -P["mfork"] * g * Y.z),
+             (WF_mc, -P["mwf"] * g * Y.z), (WR_mc, -P["mwr"] * g * Y.z)]
+    kane = me.KanesMethod(N, q_ind=[q1, q2, q5], q_dependent=[q4],
+                          configuration_constraints=[WF_cont.pos_from(WR_cont) & Y.z],
+                          u_ind=[u2, u3, u5], u_dependent=[u1, u4, u6], velocity_constraints=speed_constraints,
+                          kd_eqs=kd, constraint_solver="CRAMER")
+    kane.kanes_equations(bodies, loads)
+    return KaneModel(kane, [q1, q2, q5, q4], [u2, u3, u5], [u1, u4, u6], P, speed_constraints)
+
+
 BUILDERS = {"pendulum": pendulum, "chain": chain, "disk": lambda n=None: rolling_disk()}

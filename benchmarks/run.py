@@ -44,7 +44,7 @@ import sympy as sp
 from sympy.core.cache import clear_cache
 
 import bench_c
-from bench_cases import CASE_NAMES, DEFAULT_CASES, ROOT, Case, bicycle_files, cases
+from bench_cases import CASE_NAMES, DEFAULT_CASES, ROOT, Case, cases
 from bench_report import TOLERANCE, cold_start, machine, report
 from bench_util import (
     Equations, Timing, cse_count, counted, lambdify_rhs, per_call, plain_symbols,
@@ -450,7 +450,7 @@ def parse(argv: list[str] | None):
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--cases", default=",".join(DEFAULT_CASES),
                         help=f"comma-separated, of {','.join(CASE_NAMES)} (default {','.join(DEFAULT_CASES)}; "
-                             "bicycle is gacli only, needs a *bicycle*.yaml, and its derivation takes minutes)")
+                             "the bicycle is benchmarks/bench_bicycle.py)")
     parser.add_argument("--sizes", type=_sizes, help=f"pendulum links (default {','.join(map(str, DEFAULT_SIZES))})")
     parser.add_argument("--chain-sizes", type=_sizes,
                         help=f"chain links, 3 dof each (default {','.join(map(str, DEFAULT_CHAIN_SIZES))})")
@@ -504,8 +504,8 @@ def main(argv: list[str] | None = None) -> int:
             warm_up(scratch / "warm-up")
         names = [c.strip() for c in options.cases.split(",") if c.strip()]
         selected, skipped = cases(names, options.sizes, options.chain_sizes, scratch / "systems")
-        if "bicycle" not in names and bicycle_files():
-            skipped.append(f"bicycle: not run ({bicycle_files()[0].relative_to(ROOT)} exists; add it with --cases ...,bicycle)")
+        if "bicycle" not in names:
+            skipped.append("bicycle: see python benchmarks/bench_bicycle.py")
         rows = [CaseRun(case, options, scratch).run() for case in selected]
     cold = None
     if not options.no_cold_start:
