@@ -280,13 +280,13 @@ class _Builder:
                 if values is None:
                     return None
                 terms[frame.text] = values
-        total = F.in_inertial(terms, self.frames) if terms else sp.zeros(3, 1)
+        total = F.in_inertial(terms, self.frames) if terms else (sp.S.Zero,) * 3
         if vector.origin is not None:
             origin = self._point_named(vector.origin, f"{where}.from")
             if origin is None:
                 return None
-            total += sp.Matrix(origin)
-        return tuple(total)
+            total = F.add_vectors(total, origin)
+        return total
 
     def _point_named(self, node: Scalar, where: str):
         if node.text in self.points:
