@@ -56,7 +56,7 @@ class Differentiator:
         if expr.is_Atom:
             return _ZERO
         if expr.is_Add:
-            return sp.Add(*[d for d in map(self._derivative, expr.args) if d is not _ZERO])
+            return _sum([d for d in map(self._derivative, expr.args) if d is not _ZERO])
         if expr.is_Mul:
             return _product_rule(expr.args, [self._derivative(a) for a in expr.args])
         if expr.is_Pow:
@@ -84,7 +84,7 @@ class Differentiator:
             if partial.has(sp.Derivative):
                 return self._fallback(expr)
             terms.append(partial * darg)
-        return sp.Add(*terms)
+        return _sum(terms)
 
     def _fallback(self, expr: sp.Basic) -> sp.Expr:
         # Anything with its own derivative rule (Piecewise, Abs, ...): SymPy's diff, symbol by symbol.
@@ -100,6 +100,19 @@ def _has_plain_chain_rule(expr: sp.Basic) -> bool:
 def _product_rule(factors: Sequence[sp.Expr], derivatives: Sequence[sp.Expr]) -> sp.Expr:
     terms = [sp.Mul(*factors[:i], d, *factors[i + 1:])
              for i, d in enumerate(derivatives) if d is not _ZERO]
+    return _sum(terms)
+
+
+def _sum(terms: list[sp.Expr]) -> sp.Expr:
+    """``sp.Add(*terms)``, without SymPy's constructor and cache for no term or one.
+
+    Most partial derivatives of a term are zero (a chain's position depends
+    on one coordinate per term) and Add() is 0, Add(e) is e: the same objects.
+    """
+    if not terms:
+        return _ZERO
+    if len(terms) == 1:
+        return terms[0]
     return sp.Add(*terms)
 
 

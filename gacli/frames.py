@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 AXES = {"x": 0, "y": 1, "z": 2}
+_ZERO = sp.S.Zero
 _TRIGSIMP_OPS = 40
 INERTIAL = "N"
 
@@ -76,12 +77,36 @@ def sequence_rotations(sequence: str, angles: Sequence[sp.Expr]) -> list[tuple[s
     return [(axis.lower(), angle) for axis, angle in zip(sequence, angles)]
 
 
-def in_inertial(components: Mapping[str, Sequence[sp.Expr]], frames: Mapping[str, Frame]) -> sp.Matrix:
+def in_inertial(components: Mapping[str, Sequence[sp.Expr]], frames: Mapping[str, Frame]) -> tuple[sp.Expr, ...]:
     """Σ over frames of their components, expressed in N."""
-    total = sp.zeros(3, 1)
+    total = (_ZERO,) * 3
     for frame_name, values in components.items():
-        total += sp.Matrix(frames[frame_name].dcm) * sp.Matrix(values)
+        frame = frames[frame_name]
+        part = tuple(values) if frame.name == INERTIAL else rotate(frame.dcm.tolist(), values)
+        total = add_vectors(total, part)
     return total
+
+
+def rotate(rows: Sequence[Sequence[sp.Expr]], vector: Sequence[sp.Expr]) -> tuple[sp.Expr, ...]:
+    """``rows · vector`` as SymPy's Matrix product forms it, without building matrices.
+
+    A Matrix product costs far more than its few multiplications (domain
+    matrices, and for each entry a test 0·e for infinities, which asks the
+    assumptions of every term). Entries here are finite (a real symbol is
+    finite, and an expression is refused where it is infinite), so each
+    entry is Add of the products of nonzero pairs, as the sparse product
+    makes it, and the expressions are those Matrix would give.
+    """
+    out = []
+    for row in rows:
+        terms = [a * b for a, b in zip(row, vector) if a and b]
+        out.append(sp.Add(*terms) if terms else _ZERO)
+    return tuple(e if e else _ZERO for e in out)
+
+
+def add_vectors(a: Sequence[sp.Expr], b: Sequence[sp.Expr]) -> tuple[sp.Expr, ...]:
+    """a + b entrywise, with a zero entry taken as absent (as Matrix addition does)."""
+    return tuple((x + y if x and y else (x if x else y)) or _ZERO for x, y in zip(a, b))
 
 
 def cross_form(form: sp.Matrix, vector: sp.Matrix) -> sp.Matrix:

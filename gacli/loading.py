@@ -8,6 +8,7 @@ cannot name an input. All problems are collected and raised together as one
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -168,11 +169,22 @@ class _Builder:
 
     def _parameters(self) -> tuple[Parameter, ...]:
         out: list[Parameter] = []
+        # The scopes grow by one name per parameter; made afresh each time
+        # (symbols and all), they cost quadratic time in a file of many parameters.
+        earlier: dict[str, sp.Symbol] = {}
+        declared = self._all_names()
+        refused = {s.name: "a parameter's value may name only earlier parameters" for s in self.decl.symbols}
+        counts = Counter(s.name for s in self.decl.symbols)
         for sym in self.decl.of_kind("parameter"):
-            scope = Scope(values={p.name: S.value(p.name) for p in out}, declared=self._all_names(),
-                          refusals=self._later(sym, "a parameter's value may name only earlier parameters"))
-            value = self.expression(sym.value, f"parameters.{sym.name}.value", scope)
+            value = None
+            if sym.value is not None:
+                refusals = dict(refused)
+                if counts[sym.name] == 1:  # a duplicate's twin stays refused
+                    del refusals[sym.name]
+                scope = Scope(values=dict(earlier), declared=declared, refusals=refusals)
+                value = self.expression(sym.value, f"parameters.{sym.name}.value", scope)
             out.append(Parameter(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))
+            earlier[sym.name] = S.value(sym.name)
         return tuple(out)
 
     def _functions(self, parameters: tuple[Parameter, ...]) -> tuple[Function, ...]:
@@ -188,9 +200,6 @@ class _Builder:
 
     def _all_names(self) -> frozenset[str]:
         return frozenset(s.name for s in self.decl.symbols)
-
-    def _later(self, sym: SymbolDecl, why: str) -> dict[str, str]:
-        return {s.name: why for s in self.decl.symbols if s is not sym}
 
     # -- differential forms ------------------------------------------------
     def _form(self, text: Scalar, where: str, scope: Scope, start: int = 0, stop: int | None = None) -> Form | None:
@@ -280,13 +289,13 @@ class _Builder:
                 if values is None:
                     return None
                 terms[frame.text] = values
-        total = F.in_inertial(terms, self.frames) if terms else sp.zeros(3, 1)
+        total = F.in_inertial(terms, self.frames) if terms else (sp.S.Zero,) * 3
         if vector.origin is not None:
             origin = self._point_named(vector.origin, f"{where}.from")
             if origin is None:
                 return None
-            total += sp.Matrix(origin)
-        return tuple(total)
+            total = F.add_vectors(total, origin)
+        return total
 
     def _point_named(self, node: Scalar, where: str):
         if node.text in self.points:

@@ -5,16 +5,31 @@ loader builds a node graph and no Python object is made from a tag, so a
 ``!!python/object`` tag is just an unknown tag that we report. Scalars keep
 their source text, so ``0.1`` stays the exact decimal the user wrote and a key
 ``on`` stays the string ``on`` (YAML 1.1 would make it ``True``).
+
+Scanning and parsing in pure Python is most of the time of reading a file,
+so when PyYAML has libyaml, libyaml does them and the same Python composer
+builds the nodes. Whatever libyaml refuses, or might read otherwise than
+PyYAML, is read again by the pure-Python loader, whose nodes and messages
+are the reference.
 """
 
 from __future__ import annotations
 
 import hashlib
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Union
 
 import yaml
+from yaml.composer import Composer
+from yaml.reader import Reader
+from yaml.resolver import Resolver
+
+try:
+    from yaml._yaml import CParser
+except ImportError:  # PyYAML built without libyaml
+    CParser = None
 
 from gacli.errors import Diagnostic, Location, SystemFileError
 
@@ -115,6 +130,13 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     if len(data) > MAX_FILE_BYTES:
         raise _fail(path, f"file is too large ({len(data)} bytes; the limit is {MAX_FILE_BYTES})")
     text = _decode(data, path)
+    digest = hashlib.sha256(data).hexdigest()
+    root = _compose_fast(text)
+    if root is not None:
+        try:
+            return SourceFile(path, text, digest, _Converter(path, text, libyaml=True).convert(root, 0))
+        except _NotLikePyYAML:
+            pass
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
@@ -128,8 +150,47 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
         raise _fail(path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)") from None
     if root is None:
         raise _fail(path, "the file is empty; a system file is a YAML mapping", 1, 1)
-    digest = hashlib.sha256(data).hexdigest()
-    return SourceFile(path, text, digest, _Converter(path).convert(root, 0))
+    return SourceFile(path, text, digest, _Converter(path, text).convert(root, 0))
+
+
+# Text that libyaml reads where PyYAML's scanner refuses it (found by
+# comparing the two on mutated system files).
+_LIBYAML_DIFFERS = re.compile(r"[\t?]|[|>][-+0-9]*#")
+
+if CParser is not None:
+
+    class _LibyamlComposer(Composer, Resolver, CParser):
+        """libyaml's events, composed and resolved by PyYAML's own Python classes.
+
+        Only the event source differs from ``yaml.SafeLoader``: the nodes,
+        tags and marks are the same (the plain style is ``''``, not None), and
+        no constructor is present, so nothing can build a Python object.
+        """
+
+        def __init__(self, text: str) -> None:
+            CParser.__init__(self, text)
+            Composer.__init__(self)
+            Resolver.__init__(self)
+
+
+def _compose_fast(text: str) -> yaml.Node | None:
+    """The root node through libyaml; None when it is missing, finds a problem or an empty file.
+
+    On a problem the caller composes again with the pure-Python loader, so
+    that errors (and the few inputs libyaml and PyYAML judge differently)
+    behave exactly as without libyaml. libyaml accepts some text that PyYAML
+    refuses (characters its reader rejects, a tab or a '?' inside a plain
+    scalar, ``|#``), so such text goes to the Python loader directly.
+    """
+    if CParser is None or _LIBYAML_DIFFERS.search(text) or Reader.NON_PRINTABLE.search(text):
+        return None
+    loader = _LibyamlComposer(text)
+    try:
+        return loader.get_single_node()
+    except (yaml.YAMLError, RecursionError):
+        return None
+    finally:
+        loader.dispose()
 
 
 def _decode(data: bytes, path: str) -> str:
@@ -146,6 +207,10 @@ def _decode(data: bytes, path: str) -> str:
     return text
 
 
+class _NotLikePyYAML(Exception):
+    """libyaml's nodes may differ from PyYAML's here: compose with PyYAML instead."""
+
+
 class _Converter:
     """Walks the composed node graph once, bounding depth and total size.
 
@@ -153,8 +218,10 @@ class _Converter:
     ("billion laughs"), so the walk counts every node it visits.
     """
 
-    def __init__(self, path: str) -> None:
+    def __init__(self, path: str, text: str, libyaml: bool = False) -> None:
         self.path = path
+        self.text = text
+        self.libyaml = libyaml
         self.count = 0
 
     def convert(self, node: yaml.Node, depth: int) -> Node:
@@ -173,11 +240,15 @@ class _Converter:
         raise _fail(self.path, f"YAML tag '{node.tag}' is not allowed in a system file", line, col)
 
     def _scalar(self, node: yaml.ScalarNode) -> Scalar:
+        if self.libyaml and not node.value and not node.style:
+            # An empty value (``{a: , b: 1}``) is placed by libyaml at the
+            # next token, by PyYAML after the ':'; only PyYAML's place is known.
+            raise _NotLikePyYAML
         line, col = node.start_mark.line + 1, node.start_mark.column + 1
         kind = _SCALAR_TAGS.get(node.tag)
         if kind is None:
             raise _fail(self.path, f"YAML tag '{node.tag}' is not allowed in a system file", line, col)
-        return Scalar(node.value, kind, line, col, _offset_base(node))
+        return Scalar(node.value, kind, line, col, _offset_base(node, self.text))
 
     def _mapping(self, node: yaml.MappingNode, depth: int, line: int, col: int) -> Mapping:
         items = []
@@ -194,15 +265,17 @@ class _Converter:
         return Mapping(tuple(items), line, col)
 
 
-def _offset_base(node: yaml.ScalarNode) -> int | None:
+def _offset_base(node: yaml.ScalarNode, text: str) -> int | None:
     """Column (0-based) of the first character of a one-line scalar's text."""
     start, end = node.start_mark, node.end_mark
     if start.line != end.line:
         return None
     if node.style in ("'", '"'):
         # Escapes would shift offsets; only trust quoted text without them.
-        raw = start.buffer[start.pointer + 1 : end.pointer - 1] if start.buffer else None
+        # Both loaders count a mark's index in characters of ``text``
+        # (libyaml's marks carry no buffer).
+        raw = text[start.index + 1 : end.index - 1]
         return start.column + 1 if raw == node.value else None
-    if node.style is None:
+    if not node.style:  # plain: None from PyYAML, '' from libyaml
         return start.column
     return None

@@ -537,3 +537,53 @@ def test_arbitrary_text_parses_or_raises_parse_error(text: str) -> None:
 @given(st.text(alphabet="xy12.eE+-*/()^,_ \tsinatdo", max_size=40))
 def test_expression_like_text_parses_or_raises_parse_error(text: str) -> None:
     check_parse_is_total(text)
+
+
+# --- Building SymPy from trees ---------------------------------------------
+
+SMALL_LEAVES = st.one_of(st.builds(Num, st.sampled_from(["0", "1", "2", "0.5", "3"])),
+                         st.builds(Name, st.sampled_from(["x", "y", "z"])))
+
+
+def small_trees(max_depth: int) -> st.SearchStrategy[grammar.Node]:
+    strategy = SMALL_LEAVES
+    for _ in range(max_depth):
+        sub = strategy
+        strategy = st.one_of(
+            SMALL_LEAVES,
+            st.builds(Neg, sub),
+            st.builds(BinOp, st.sampled_from(["+", "-", "+", "-", "*"]), sub, sub),
+            st.builds(Call, st.sampled_from(["sin", "cos", "sqrt"]), st.tuples(sub)),
+        )
+    return strategy
+
+
+def pairwise(node: grammar.Node, symbols: dict):
+    """The SymPy expression built one binary operation at a time (the reference)."""
+    import sympy as sp
+
+    if isinstance(node, Num):
+        return sp.Rational(node.text)
+    if isinstance(node, Name):
+        return symbols[node.id]
+    if isinstance(node, Neg):
+        return -pairwise(node.operand, symbols)
+    if isinstance(node, Call):
+        return getattr(sp, node.func)(*(pairwise(a, symbols) for a in node.args))
+    left, right = pairwise(node.left, symbols), pairwise(node.right, symbols)
+    if node.op == "+":
+        return left + right
+    return left - right if node.op == "-" else left * right
+
+
+@settings(max_examples=300, deadline=None)
+@given(small_trees(6))
+def test_sums_built_at_once_are_the_pairwise_expressions(tree: grammar.Node) -> None:
+    """build adds a chain a ± b ± ... in one Add: exactly what adding pair by pair gives."""
+    import sympy as sp
+
+    from gacli.expr.build import Scope, build
+
+    symbols = {n: sp.Symbol(n, real=True) for n in "xyz"}
+    built, expected = build(tree, Scope(values=symbols)), pairwise(tree, symbols)
+    assert built == expected and sp.srepr(built) == sp.srepr(expected)

@@ -174,3 +174,29 @@ def test_rolling_disk_in_frames_equals_format_1(rng):
              "m": 2.0, "r": 0.3, "g": 9.81, "dot(yaw)": rng.uniform(-2, 2), "dot(lean)": rng.uniform(-2, 2),
              "dot(spin)": rng.uniform(-2, 2)}
         assert close(gacli_accelerations(derived_, v), gacli_accelerations(by_hand, v), rtol=1e-11)
+
+
+def test_vectors_in_frames_are_the_matrix_products_exactly():
+    """in_inertial skips Matrix for speed; its entries must be the very expressions Matrix forms."""
+    from gacli import frames as F
+
+    q, r, a, b = sp.symbols("q r a b", real=True)
+    width = 3
+
+    def differential(angle):
+        return sp.Matrix([[sp.diff(angle, q), sp.diff(angle, r), 0]])
+
+    N = F.inertial_frame(width)
+    A = F.oriented("A", N, [("z", q), ("x", r)], differential)
+    B = F.oriented("B", A, [("y", sp.pi / 2)], differential)  # an integer dcm
+    frames = {"N": N, "A": A, "B": B}
+    vectors = [(a, 0, b * sp.cos(q)), (0, 0, 0), (1, 2, sp.Rational(1, 3)), (a + b, -a, 0), (0, r, 1)]
+    for name in frames:
+        for v in vectors:
+            expected = tuple(sp.Matrix(frames[name].dcm) * sp.Matrix(v))
+            assert F.in_inertial({name: v}, frames) == expected
+    for u in vectors:
+        for v in vectors:
+            expected = tuple(sp.zeros(3, 1) + sp.Matrix(A.dcm) * sp.Matrix(u) + sp.Matrix(B.dcm) * sp.Matrix(v))
+            assert F.in_inertial({"A": u, "B": v}, frames) == expected
+            assert F.add_vectors(u, v) == tuple(sp.Matrix(u) + sp.Matrix(v))

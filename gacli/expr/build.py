@@ -20,6 +20,7 @@ from gacli.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
 from gacli.symbols import rate_name
 
 MAX_EXPONENT = 100
+_ADDITIVE = ("+", "-")
 MAX_DIGITS = 300
 
 _FUNCTIONS = {
@@ -129,12 +130,10 @@ def _defined(value: sp.Expr, pos: int) -> sp.Expr:
 
 
 def _binop(node: BinOp, scope: Scope) -> sp.Expr:
+    if node.op in _ADDITIVE:
+        return _sum(node, scope)
     left = build(node.left, scope)
     right = build(node.right, scope)
-    if node.op == "+":
-        return left + right
-    if node.op == "-":
-        return left - right
     if node.op == "*":
         return left * right
     if node.op == "/":
@@ -143,6 +142,26 @@ def _binop(node: BinOp, scope: Scope) -> sp.Expr:
         return _defined(left / right, node.pos)
     _check_power(left, right, node.pos)
     return _defined(left**right, node.pos)
+
+
+def _sum(node: BinOp, scope: Scope) -> sp.Expr:
+    """A chain a ± b ± c ... as one Add of its terms.
+
+    Adding term by term sorts and collects the growing sum again at every
+    step, quadratic in its length; Add is associative (exact numbers, and
+    each ``a - b`` is ``Add(a, -b)``), so the result is the same expression.
+    The terms are built left to right, so the first error is the same too.
+    """
+    links = []
+    left: Node = node
+    while isinstance(left, BinOp) and left.op in _ADDITIVE:
+        links.append(left)
+        left = left.left
+    terms = [build(left, scope)]
+    for link in reversed(links):
+        right = build(link.right, scope)
+        terms.append(right if link.op == "+" else -right)
+    return sp.Add(*terms)
 
 
 def _check_power(base: sp.Expr, exponent: sp.Expr, pos: int) -> None:

@@ -209,14 +209,19 @@ _GREEK = re.compile(r"GREEK (SMALL|CAPITAL) LETTER ([A-Z]+)")
 
 def _tokenize(text: str) -> list[_Token]:
     tokens = []
-    pos = 0
-    while pos < len(text):
-        match = _SCANNER.match(text, pos)
-        if match is None:
+    append, match = tokens.append, _SCANNER.match
+    pos, end = 0, len(text)
+    while pos < end:
+        found = match(text, pos)
+        if found is None:
             raise _bad_character(text[pos], pos)
-        if match.lastgroup != "space":
-            tokens.append(_token(match, text))
-        pos = match.end()
+        kind = found.lastgroup
+        if kind == "op":  # the commonest token needs no checks: spare it _token's call
+            word = found.group()
+            append(_Token(word, word, pos))
+        elif kind != "space":
+            append(_token(found, text))
+        pos = found.end()
     tokens.append(_Token("end", "", len(text)))
     return tokens
 
@@ -292,6 +297,8 @@ def _describe(token: _Token) -> str:
 # --- Parser ----------------------------------------------------------------
 
 _OPERAND_START = frozenset({"num", "name", "("})
+_ADDITIVE = frozenset({"+", "-"})
+_MULTIPLICATIVE = frozenset({"*", "/"})
 _OPERAND_END = frozenset({"num", "name", ")"})
 
 
@@ -318,7 +325,9 @@ class _Parser:
 
     def __init__(self, text: str, tokens: list[_Token]) -> None:
         self.text = text
-        self.tokens = tokens
+        # Look-ahead goes at most two tokens past the end: padding with copies
+        # of 'end' spares _peek a bounds check on every token.
+        self.tokens = tokens + [tokens[-1]] * 3
         self.i = 0
         self.depth = 0
         self.heights: dict[int, int] = {}  # id(node) -> height; leaves are absent (0)
@@ -335,7 +344,7 @@ class _Parser:
     # Token access.
 
     def _peek(self, ahead: int = 0) -> _Token:
-        return self.tokens[min(self.i + ahead, len(self.tokens) - 1)]
+        return self.tokens[self.i + ahead]
 
     def _advance(self) -> _Token:
         token = self.tokens[self.i]
@@ -345,7 +354,11 @@ class _Parser:
     def _grow(self, node: Node, token: _Token) -> Node:
         """Record the height of a new inner node, refusing trees taller than MAX_DEPTH."""
         # Keys by id() are safe: every node made here stays alive in the tree.
-        height = 1 + max((self.heights.get(id(child), 0) for child in _children(node)), default=0)
+        heights = self.heights
+        if isinstance(node, BinOp):
+            height = 1 + max(heights.get(id(node.left), 0), heights.get(id(node.right), 0))
+        else:
+            height = 1 + max((heights.get(id(child), 0) for child in _children(node)), default=0)
         if height > MAX_DEPTH:
             raise ParseError(f"expression is nested too deeply (more than {MAX_DEPTH} levels; "
                              "each operator of a long sum or product is a level)", token.pos)
@@ -362,14 +375,14 @@ class _Parser:
 
     def _sum(self) -> Node:
         node = self._term()
-        while self._peek().kind in ("+", "-"):
+        while self.tokens[self.i].kind in _ADDITIVE:
             op = self._advance()
             node = self._grow(BinOp(op.kind, node, self._term(), op.pos), op)
         return node
 
     def _term(self) -> Node:
         node = self._unary()
-        while self._peek().kind in ("*", "/"):
+        while self.tokens[self.i].kind in _MULTIPLICATIVE:
             op = self._advance()
             node = self._grow(BinOp(op.kind, node, self._unary(), op.pos), op)
         return node

@@ -1,0 +1,66 @@
+"""Reading YAML: libyaml, when PyYAML has it, must give exactly the nodes and places PyYAML's own loader gives."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import ROOT
+from gacli import source
+from gacli.errors import SystemFileError
+
+YAML_FILES = sorted(
+    p for d in ("systems", "tests/invalid", "tests/hostile", "tests/cases", "benchmarks/cases")
+    for p in (ROOT / d).glob("*.yaml")
+)
+
+needs_libyaml = pytest.mark.skipif(source.CParser is None, reason="PyYAML without libyaml")
+
+
+def python_only(monkeypatch, data: bytes, path: str = "<string>"):
+    """parse_source as without libyaml (the reference), or its error's diagnostics."""
+    monkeypatch.setattr(source, "CParser", None)
+    try:
+        return source.parse_source(data, path).root
+    except SystemFileError as exc:
+        return [str(d) for d in exc.diagnostics]
+    finally:
+        monkeypatch.undo()
+
+
+def either(data: bytes, path: str = "<string>"):
+    try:
+        return source.parse_source(data, path).root
+    except SystemFileError as exc:
+        return [str(d) for d in exc.diagnostics]
+
+
+@needs_libyaml
+@pytest.mark.parametrize("path", YAML_FILES, ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_libyaml_gives_the_nodes_and_places_of_pyyaml(path, monkeypatch):
+    data = path.read_bytes()
+    assert either(data, str(path)) == python_only(monkeypatch, data, str(path))
+
+
+@needs_libyaml
+def test_the_shipped_systems_are_read_by_libyaml():
+    """The fast path is taken for ordinary files (else this speed-up silently vanishes)."""
+    for path in sorted((ROOT / "systems").glob("*.yaml")):
+        text = source._decode(path.read_bytes(), str(path))
+        assert source._compose_fast(text) is not None, path
+
+
+@needs_libyaml
+@pytest.mark.parametrize("text", [
+    "a: {b: , c: 1}\n",           # an empty value: libyaml places it at the ','
+    "a: [x, {b: }]\n",
+    "a: b\tc\n",                  # a tab in a plain scalar: libyaml accepts it
+    "a: {p: {m: 1, pos?tion: 2}}\n",  # '?' inside a flow plain scalar: libyaml accepts it
+    "a: |#\n  x\n",               # a comment right after '|': libyaml accepts it
+    "a: 'it''s'\nb: \"x\\ty\"\nc: \"héllo\"\n",  # quoted text: offsets from the marks' index
+    "a: 1\nb: [1, 2\n",           # a syntax error: PyYAML's message and place
+    "a: 1\na: 2\n",               # a duplicate key
+    "- &A [1]\n- *B\n",           # an undefined alias
+])
+def test_libyaml_and_pyyaml_agree_where_they_differ(text, monkeypatch):
+    data = text.encode("utf-8")
+    assert either(data) == python_only(monkeypatch, data)
