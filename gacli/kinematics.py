@@ -342,11 +342,15 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     return gamma
 
 
-def point_motion(position, system: System, rates: Rates, gamma=None) -> Motion:
-    """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14)."""
+def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> Motion:
+    """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14).
+
+    ``J`` is ∂r/∂q when the caller has it (see :func:`body_motions`).
+    """
     r = sp.Matrix(position)
     coords = [c.name for c in system.coordinates]
-    J = jacobian(r, [S.value(c) for c in coords])
+    if J is None:
+        J = jacobian(r, [S.value(c) for c in coords])
     b, b0 = rates.rows(coords)
     explicit = r.applyfunc(S.time_differentiator(function_chain(system)))
     velocity_symbols = product(J, sp.Matrix([S.rate(c) for c in coords])) + explicit
@@ -384,14 +388,17 @@ def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
     """
     if A.cols != B.rows:
         raise ValueError(f"cannot multiply {A.rows}x{A.cols} by {B.rows}x{B.cols}")
-    columns = [[(r, B[r, j]) for r in range(B.rows) if B[r, j] != 0] for j in range(B.cols)]
-    return sp.Matrix(A.rows, B.cols, lambda i, j: _dot(A, i, columns[j]))
+    # Plain lists: indexing a SymPy matrix entry by entry costs more than the products.
+    rows, b = A.tolist(), B.tolist()
+    columns = [[(r, b[r][j]) for r in range(B.rows) if b[r][j] != 0] for j in range(B.cols)]
+    entries = [_dot(row, column) for row in rows for column in columns]
+    return sp.Matrix(A.rows, B.cols, entries)
 
 
-def _dot(A: sp.Matrix, i: int, column: list[tuple[int, sp.Expr]]) -> sp.Expr:
+def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
     if len(column) == 1 and column[0][1] == 1:
-        return A[i, column[0][0]]
-    return sp.Add(*[A[i, r] * b for r, b in column if A[i, r] != 0])
+        return row[column[0][0]]
+    return sp.Add(*[row[r] * b for r, b in column if row[r] != 0])
 
 
 def _rest_of_derivative(vector: sp.Matrix, system: System, rates: Rates) -> sp.Matrix:
@@ -403,9 +410,14 @@ def _rest_of_derivative(vector: sp.Matrix, system: System, rates: Rates) -> sp.M
 
 def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
     gamma = dependent_acceleration_rest(system, rates)
+    # One Jacobian of all the positions: the bodies of a chain repeat each
+    # other's terms, and one memo per coordinate differentiates each term once.
+    positions = [e for body in system.bodies for e in body.position]
+    J = jacobian(positions, [S.value(c.name) for c in system.coordinates])
     out = []
-    for body in system.bodies:
-        linear = point_motion(body.position, system, rates, gamma=gamma)
+    for i, body in enumerate(system.bodies):
+        rows = J.extract(list(range(3 * i, 3 * i + 3)), list(range(J.cols)))
+        linear = point_motion(body.position, system, rates, gamma=gamma, J=rows)
         angular = rotation_motion(body.rotation, system, rates, gamma=gamma) if body.is_rigid else None
         out.append(BodyMotion(body, linear, angular))
     return tuple(out)
