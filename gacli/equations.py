@@ -166,8 +166,9 @@ def _mass_and_inertial_terms(motions: tuple[BodyMotion, ...], rates: Rates) -> t
     rest_terms: list[dict[sp.Expr, list[sp.Expr]]] = [{} for _ in range(k)]
     for motion in motions:
         V, m = motion.linear.partials, motion.body.mass
-        _add_quadratic_terms(mass_terms, V, sp.eye(V.rows) * m, symmetric)
-        _add_linear_terms(rest_terms, V, m * motion.linear.acceleration_rest)
+        _add_quadratic_terms(mass_terms, V, [[m if a == b else 0 for b in range(V.rows)] for a in range(V.rows)],
+                             symmetric)
+        _add_linear_terms(rest_terms, V, [m * a for a in motion.linear.acceleration_rest])
         if motion.angular is not None:
             W, I = motion.angular.partials, motion.body.inertia
             w = W * u + motion.angular.velocity0
@@ -188,13 +189,14 @@ def _is_symmetric(I: sp.Matrix) -> bool:
     return all(I[a, b] == I[b, a] for a in range(I.rows) for b in range(a))
 
 
-def _add_quadratic_terms(entries, P: sp.Matrix, C: sp.Matrix, lower_only: bool) -> None:
+def _add_quadratic_terms(entries, P: sp.Matrix, C, lower_only: bool) -> None:
     """Add the terms P_ai C_ab P_bj of (Pᵀ C P)_ij, grouped by the geometric factor P_ai P_bj.
 
     With a symmetric C (every mass matrix m·1 and inertia matrix), Pᵀ C P is
     symmetric: only i ≥ j is formed and the caller mirrors it.
     """
-    rows, C = P.tolist(), C.tolist()  # plain lists: matrix indexing is slow
+    rows = P.tolist()  # plain lists: matrix indexing is slow
+    C = C.tolist() if isinstance(C, sp.MatrixBase) else C
     nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
     for i in range(P.cols):
         for j in range(i + 1 if lower_only else P.cols):
@@ -205,7 +207,7 @@ def _add_quadratic_terms(entries, P: sp.Matrix, C: sp.Matrix, lower_only: bool) 
                         _add_term(groups, p_ai * p_bj, C[a][b])
 
 
-def _add_linear_terms(entries, P: sp.Matrix, g: sp.Matrix, split: bool = True) -> None:
+def _add_linear_terms(entries, P: sp.Matrix, g, split: bool = True) -> None:
     """Add the terms of (Pᵀ g)_s, g split into its terms so that equal products share their factors."""
     for row, g_a in zip(P.tolist(), g):
         if g_a == 0:

@@ -23,6 +23,7 @@ from collections.abc import Iterable, Mapping, Sequence
 import sympy as sp
 
 from gacli.coerce import as_expr
+from gacli.graph import postorder
 
 _ZERO = sp.S.Zero
 
@@ -34,9 +35,14 @@ class Differentiator:
     so apply one instance to all the entries of a matrix.
     """
 
-    def __init__(self, seeds: Mapping[sp.Symbol, sp.Expr]):
+    def __init__(self, seeds: Mapping[sp.Symbol, sp.Expr], *, free: Mapping[sp.Basic, frozenset] | None = None):
         self._seeds = {s: as_expr(v) for s, v in seeds.items() if v != 0}
+        # When given (see jacobian), the seed symbols in each subexpression: a
+        # subexpression free of them has derivative zero without a walk.
         self._memo: dict[sp.Basic, sp.Expr] = {}
+        if free is not None:
+            seeds_here = frozenset(self._seeds)
+            self._memo.update((node, _ZERO) for node, symbols in free.items() if not symbols & seeds_here)
 
     def __call__(self, expr) -> sp.Expr:
         expr = as_expr(expr)
@@ -119,12 +125,25 @@ def _sum(terms: list[sp.Expr]) -> sp.Expr:
 def jacobian(exprs: Iterable[sp.Expr], symbols: Sequence[sp.Symbol]) -> sp.Matrix:
     """∂e_i/∂s_j; one memoised walk per symbol, shared by all the expressions."""
     exprs = [as_expr(e) for e in exprs]
-    free = [e.free_symbols for e in exprs]  # an entry without s has ∂/∂s = 0: no walk
+    free = _symbols_below(exprs, frozenset(symbols))
     columns = []
     for s in symbols:
-        partial = Differentiator({s: sp.S.One})
-        columns.append([partial(e) if s in f else _ZERO for e, f in zip(exprs, free)])
+        partial = Differentiator({s: sp.S.One}, free=free)
+        columns.append([partial(e) for e in exprs])
     return sp.Matrix(len(exprs), len(symbols), lambda i, j: columns[j][i])
+
+
+def _symbols_below(exprs: Sequence[sp.Basic], wanted: frozenset) -> dict[sp.Basic, frozenset]:
+    """For each distinct subexpression, which of ``wanted`` it contains (one walk, arguments first)."""
+    below: dict[sp.Basic, frozenset] = {}
+    empty: frozenset = frozenset()
+    for node in postorder(exprs):
+        if node.args:
+            found = empty.union(*(below[a] for a in node.args))
+        else:
+            found = frozenset((node,)) if node in wanted else empty
+        below[node] = found
+    return below
 
 
 def gradient(expr: sp.Expr, symbols: Sequence[sp.Symbol]) -> sp.Matrix:

@@ -27,7 +27,7 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     Q += _from_work(system, rates)
     Q += _from_potential(system, rates)
     substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    return sp.ImmutableMatrix(Q.rows, 1, substitute(list(Q), substitution))
+    return sp.ImmutableMatrix(Q.rows, 1, substitute(list(Q), substitution) if substitution else list(Q))
 
 
 def _from_forces(system: System, rates: Rates) -> sp.Matrix:

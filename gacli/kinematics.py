@@ -347,17 +347,29 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> 
 
     ``J`` is ∂r/∂q when the caller has it (see :func:`body_motions`).
     """
-    r = sp.Matrix(position)
     coords = [c.name for c in system.coordinates]
     if J is None:
-        J = jacobian(r, [S.value(c) for c in coords])
+        J = jacobian(position, [S.value(c) for c in coords])
+    # Lists, not SymPy matrices, in between: at a few entries per body the
+    # matrices' construction costs more than the arithmetic.
+    rows = J.tolist()
     b, b0 = rates.rows(coords)
-    explicit = r.applyfunc(S.time_differentiator(function_chain(system)))
-    velocity_symbols = product(J, sp.Matrix([S.rate(c) for c in coords])) + explicit
+    moving = S.time_differentiator(function_chain(system))
+    explicit = [moving(e) for e in position]
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = product(J, sp.Matrix([gamma[c] for c in coords])) + _rest_of_derivative(velocity_symbols, system, rates)
-    return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(product(J, b0) + explicit),
-                  sp.ImmutableMatrix(rest))
+    qdot = _column([S.rate(c) for c in coords])
+    accelerations = _column([gamma[c] for c in coords])
+    velocity_symbols = [_dot(row, qdot) + e for row, e in zip(rows, explicit)]
+    rest = [_dot(row, accelerations) + d
+            for row, d in zip(rows, _rest_of_derivative(velocity_symbols, system, rates))]
+    velocity0 = [v + e for v, e in zip(product(J, b0), explicit)]
+    return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(len(position), 1, velocity0),
+                  sp.ImmutableMatrix(len(position), 1, rest))
+
+
+def _column(entries: list[sp.Expr]) -> list[tuple[int, sp.Expr]]:
+    """A column as _dot takes it: (index, entry) of the nonzero entries."""
+    return [(r, e) for r, e in enumerate(entries) if e != 0]
 
 
 def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motion:
@@ -367,7 +379,7 @@ def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motio
     W0 = sp.Matrix([form.dt for form in rotation])
     omega_symbols = product(W, sp.Matrix([S.rate(n) for n in names])) + W0
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = product(W, sp.Matrix([gamma[n] for n in names])) + _rest_of_derivative(omega_symbols, system, rates)
+    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(_rest_of_derivative(omega_symbols, system, rates))
     return Motion(sp.ImmutableMatrix(product(W, rates.beta)), sp.ImmutableMatrix(product(W, rates.beta0) + W0),
                   sp.ImmutableMatrix(rest))
 
@@ -401,11 +413,12 @@ def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
     return sp.Add(*[row[r] * b for r, b in column if row[r] != 0])
 
 
-def _rest_of_derivative(vector: sp.Matrix, system: System, rates: Rates) -> sp.Matrix:
-    """d/dt of an expression linear in the rates, without its r̈ terms, the rates then put as β u + β₀."""
-    chain = rate_symbols_chain(system)
-    derivative = vector.applyfunc(S.time_differentiator(chain))
-    return derivative.xreplace({S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent})
+def _rest_of_derivative(vector, system: System, rates: Rates) -> list[sp.Expr]:
+    """d/dt of expressions linear in the rates, without their r̈ terms, the rates then put as β u + β₀."""
+    differentiate = S.time_differentiator(rate_symbols_chain(system))
+    derivative = [differentiate(e) for e in vector]
+    dependent = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
+    return [e.xreplace(dependent) for e in derivative] if dependent else derivative
 
 
 def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
