@@ -222,7 +222,7 @@ def _add_linear_terms(entries, P: sp.Matrix, g, split: bool = True) -> None:
 def _add_term(groups: dict[sp.Expr, list[sp.Expr]], product: sp.Expr, factor: sp.Expr) -> None:
     """Record factor·product under product's symbol part (its numeric coefficient goes to the factor)."""
     coefficient, key = product.as_coeff_Mul()
-    groups.setdefault(key, []).append(coefficient * factor)
+    groups.setdefault(key, []).append(factor if coefficient is sp.S.One else coefficient * factor)
 
 
 def _sum_grouped(groups: dict[sp.Expr, list[sp.Expr]]) -> sp.Expr:

@@ -355,7 +355,7 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> 
     rows = J.tolist()
     b, b0 = rates.rows(coords)
     moving = S.time_differentiator(function_chain(system))
-    explicit = [moving(e) for e in position]
+    explicit = [moving(e) if _moves(e, system) else sp.S.Zero for e in position]
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
     qdot = _column([S.rate(c) for c in coords])
     accelerations = _column([gamma[c] for c in coords])
@@ -365,6 +365,11 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> 
     velocity0 = [v + e for v, e in zip(product(J, b0), explicit)]
     return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(len(position), 1, velocity0),
                   sp.ImmutableMatrix(len(position), 1, rest))
+
+
+def _moves(expr: sp.Expr, system: System) -> bool:
+    """Whether ``expr`` depends on time explicitly (through t or a prescribed function)."""
+    return bool(system.free_functions) or S.T in expr.free_symbols
 
 
 def _column(entries: list[sp.Expr]) -> list[tuple[int, sp.Expr]]:
