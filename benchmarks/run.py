@@ -168,11 +168,25 @@ def recording_cse():
     _CSE_CALLS = calls
     for module in targets:
         module.cse = _recording_cse
+    # Equations too large for SymPy's canonical cse go through gacli's one-pass CSE.
+    try:
+        import gacli.emit.printers as printers
+    except ImportError:
+        printers = None
+    one_pass = getattr(printers, "shared_subexpressions", None)
+    if one_pass is not None:
+        def recording_one_pass(exprs, symbols):
+            result = one_pass(exprs, symbols)
+            calls.append((exprs, result))
+            return result
+        printers.shared_subexpressions = recording_one_pass
     try:
         yield calls
     finally:
         for module in targets:
             module.cse = _ORIGINAL_CSE
+        if one_pass is not None:
+            printers.shared_subexpressions = one_pass
         _CSE_CALLS = None
 
 
