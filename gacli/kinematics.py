@@ -342,7 +342,7 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     return gamma
 
 
-def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> Motion:
+def point_motion(position, system: System, rates: Rates, gamma=None, J=None, differentiate=None) -> Motion:
     """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14).
 
     ``J`` is ∂r/∂q when the caller has it (see :func:`body_motions`).
@@ -361,7 +361,7 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None) -> 
     accelerations = _column([gamma[c] for c in coords])
     velocity_symbols = [_dot(row, qdot) + e for row, e in zip(rows, explicit)]
     rest = [_dot(row, accelerations) + d
-            for row, d in zip(rows, _rest_of_derivative(velocity_symbols, system, rates))]
+            for row, d in zip(rows, _rest_of_derivative(velocity_symbols, system, rates, differentiate))]
     velocity0 = [v + e for v, e in zip(product(J, b0), explicit)]
     return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(len(position), 1, velocity0),
                   sp.ImmutableMatrix(len(position), 1, rest))
@@ -377,14 +377,14 @@ def _column(entries: list[sp.Expr]) -> list[tuple[int, sp.Expr]]:
     return [(r, e) for r, e in enumerate(entries) if e != 0]
 
 
-def rotation_motion(rotation, system: System, rates: Rates, gamma=None) -> Motion:
+def rotation_motion(rotation, system: System, rates: Rates, gamma=None, differentiate=None) -> Motion:
     """ω = W β u + (W β₀ + W₀) from the rotation forms; α = W β u̇ + (W γ + Ẇ ṙ + Ẇ₀)."""
     names = list(rates.names)
     W = sp.Matrix([[form.coefficient(n) for n in names] for form in rotation])
     W0 = sp.Matrix([form.dt for form in rotation])
     omega_symbols = product(W, sp.Matrix([S.rate(n) for n in names])) + W0
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(_rest_of_derivative(omega_symbols, system, rates))
+    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(_rest_of_derivative(omega_symbols, system, rates, differentiate))
     return Motion(sp.ImmutableMatrix(product(W, rates.beta)), sp.ImmutableMatrix(product(W, rates.beta0) + W0),
                   sp.ImmutableMatrix(rest))
 
@@ -418,9 +418,14 @@ def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
     return sp.Add(*[row[r] * b for r, b in column if row[r] != 0])
 
 
-def _rest_of_derivative(vector, system: System, rates: Rates) -> list[sp.Expr]:
-    """d/dt of expressions linear in the rates, without their r̈ terms, the rates then put as β u + β₀."""
-    differentiate = S.time_differentiator(rate_symbols_chain(system))
+def _rest_of_derivative(vector, system: System, rates: Rates, differentiate=None) -> list[sp.Expr]:
+    """d/dt of expressions linear in the rates, without their r̈ terms, the rates then put as β u + β₀.
+
+    ``differentiate`` is a d/dt over the rates as symbols (``rate_symbols_chain``)
+    that the caller shares between bodies, so that their common terms are
+    differentiated once.
+    """
+    differentiate = differentiate or S.time_differentiator(rate_symbols_chain(system))
     derivative = [differentiate(e) for e in vector]
     dependent = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
     return [e.xreplace(dependent) for e in derivative] if dependent else derivative
@@ -432,10 +437,12 @@ def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
     # other's terms, and one memo per coordinate differentiates each term once.
     positions = [e for body in system.bodies for e in body.position]
     J = jacobian(positions, [S.value(c.name) for c in system.coordinates])
+    differentiate = S.time_differentiator(rate_symbols_chain(system))
     out = []
     for i, body in enumerate(system.bodies):
         rows = J.extract(list(range(3 * i, 3 * i + 3)), list(range(J.cols)))
-        linear = point_motion(body.position, system, rates, gamma=gamma, J=rows)
-        angular = rotation_motion(body.rotation, system, rates, gamma=gamma) if body.is_rigid else None
+        linear = point_motion(body.position, system, rates, gamma=gamma, J=rows, differentiate=differentiate)
+        angular = (rotation_motion(body.rotation, system, rates, gamma=gamma, differentiate=differentiate)
+                   if body.is_rigid else None)
         out.append(BodyMotion(body, linear, angular))
     return tuple(out)
