@@ -486,19 +486,22 @@ LEAVES = st.one_of(
 )
 
 
+def nested(leaves, max_depth: int, branches) -> st.SearchStrategy[grammar.Node]:
+    """Trees at most max_depth nodes tall: a leaf, or a branch over smaller trees."""
+    strategy = leaves
+    for _ in range(max_depth):
+        strategy = st.one_of(leaves, *(branch(strategy) for branch in branches))
+    return strategy
+
+
 def trees(max_depth: int) -> st.SearchStrategy[grammar.Node]:
     """Random trees of every node type, at most max_depth nodes tall."""
-    strategy = LEAVES
-    for _ in range(max_depth):
-        sub = strategy
-        strategy = st.one_of(
-            LEAVES,
-            st.builds(Neg, sub),
-            st.builds(BinOp, st.sampled_from(["+", "-", "*", "/", "**"]), sub, sub),
-            st.builds(Call, st.sampled_from(sorted(FUNCTIONS - {"atan2"})), st.tuples(sub)),
-            st.builds(Call, st.just("atan2"), st.tuples(sub, sub)),
-        )
-    return strategy
+    return nested(LEAVES, max_depth, [
+        lambda sub: st.builds(Neg, sub),
+        lambda sub: st.builds(BinOp, st.sampled_from(["+", "-", "*", "/", "**"]), sub, sub),
+        lambda sub: st.builds(Call, st.sampled_from(sorted(FUNCTIONS - {"atan2"})), st.tuples(sub)),
+        lambda sub: st.builds(Call, st.just("atan2"), st.tuples(sub, sub)),
+    ])
 
 
 @settings(max_examples=400)
@@ -546,16 +549,11 @@ SMALL_LEAVES = st.one_of(st.builds(Num, st.sampled_from(["0", "1", "2", "0.5", "
 
 
 def small_trees(max_depth: int) -> st.SearchStrategy[grammar.Node]:
-    strategy = SMALL_LEAVES
-    for _ in range(max_depth):
-        sub = strategy
-        strategy = st.one_of(
-            SMALL_LEAVES,
-            st.builds(Neg, sub),
-            st.builds(BinOp, st.sampled_from(["+", "-", "+", "-", "*"]), sub, sub),
-            st.builds(Call, st.sampled_from(["sin", "cos", "sqrt"]), st.tuples(sub)),
-        )
-    return strategy
+    return nested(SMALL_LEAVES, max_depth, [
+        lambda sub: st.builds(Neg, sub),
+        lambda sub: st.builds(BinOp, st.sampled_from(["+", "-", "+", "-", "*"]), sub, sub),
+        lambda sub: st.builds(Call, st.sampled_from(["sin", "cos", "sqrt"]), st.tuples(sub)),
+    ])
 
 
 def pairwise(node: grammar.Node, symbols: dict):
