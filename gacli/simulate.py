@@ -52,6 +52,7 @@ from gacli.equations import Derivation
 from gacli.errors import GacliError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import Name, ParseError, Rate, parse
+from gacli.graph import free_symbols, shared_subexpressions
 
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 DEFAULT_METHOD = "DOP853"
@@ -364,7 +365,9 @@ class _Problem:
         return _Problem(derivation, module, values.state, values.parameter_names, p, x0, r, functions)
 
     def _vectorized(self, expr: sp.Expr, extra=()) -> Callable:
-        f = sp.lambdify(self.arguments + list(extra), expr, modules="numpy", dummify=True)
+        replacements, expr = _shared(expr)
+        f = sp.lambdify(self.arguments + list(extra), expr, modules="numpy", dummify=True,
+                        cse=(lambda e: (replacements, e)) if replacements else False)
         return lambda t, states, *more: np.array(np.broadcast_to(
             np.asarray(f(t, *states.T, *self.p, *more), dtype=float), t.shape))
 
@@ -398,6 +401,22 @@ class _Problem:
         replace.update({S.rate(q.name): rates.rate(q.name) for q in system.quasi_coordinates})
         expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
         return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
+
+
+def _shared(expr: sp.Expr) -> tuple[list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
+    """(shared subexpressions, the expression in them) for lambdify, when ``expr`` is large.
+
+    The bicycle's energy is millions of nodes as a tree; lambdify walks and
+    prints the tree, so it is handed the few thousand distinct subexpressions
+    as assignments instead (gacli.graph).
+    """
+    if S.is_small(expr, _LARGE):
+        return [], expr
+    replacements, (reduced,) = shared_subexpressions([expr], sp.numbered_symbols("_s"))
+    return replacements, reduced
+
+
+_LARGE = 20_000
 
 
 def _arguments(state: Sequence[str], parameters: Sequence[str]) -> list[sp.Symbol]:
@@ -664,7 +683,7 @@ def _moves_with_time(motion) -> bool:
 
 
 def _free(*exprs) -> set[sp.Symbol]:
-    return set().union(*(as_expr(e).free_symbols for e in exprs)) if exprs else set()
+    return free_symbols([as_expr(e) for e in exprs])
 
 
 def _parameter_symbols(system) -> set[sp.Symbol]:
