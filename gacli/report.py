@@ -111,9 +111,12 @@ def reactions_report(d: Derivation) -> tuple[Section, ...]:
     """The constraint forces λ (gacli.verify), one per constraint, in the state."""
     from gacli.verify import constraint_forces
 
+    title = "Constraint forces (multipliers of eq. 14.1, see docs/verify.md)"
+    if not displayable(d):
+        return (Section(title, ("Not derived for a system this large: they need a symbolic solve of the "
+                                "equations; gacli verify checks the equations without them.",)),)
     tidy = Tidy()
     forces = constraint_forces(d)
     lines = [f"lambda_{i} = {show(tidy(value))}    ({c.text})"
              for i, (value, c) in enumerate(zip(forces, d.system.constraints))]
-    return (Section("Constraint forces (multipliers of eq. 14.1, see docs/verify.md)",
-                    tuple(lines) or ("(no constraints)",)),)
+    return (Section(title, tuple(lines) or ("(no constraints)",)),)

@@ -58,6 +58,7 @@ import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.errors import DerivationError
 from gacli.model import Body, Form, System
 from gacli.readable import displayable
 
@@ -791,6 +792,11 @@ def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True)
     dynamics does not determine how the reaction is shared among them; λ is
     then the minimum-norm solution (for two equal wheels: an equal share).
     """
+    if not displayable(derivation):
+        raise DerivationError(
+            f"{derivation.system.path}: the constraint forces are not derived for a system this large: "
+            "they need a symbolic solve of equations that are millions of terms as trees "
+            "(gacli verify checks the equations without them)")
     lam, fundamental = _multipliers_in_state(derivation)
     lam = lam[:fundamental.constraint_count, :]
     if solved and lam.rows:
