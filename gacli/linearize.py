@@ -144,7 +144,12 @@ def _jacobian(kinematic, mass, forcing, x0, r0, wrt: str) -> np.ndarray:
 def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None = None) -> tuple[sp.Matrix, sp.Matrix]:
     """A and B as expressions, at an operating point given by expressions (small systems)."""
     from gacli.emit.naming import layout
+    from gacli.readable import displayable
 
+    if not displayable(derivation):
+        raise LinearizeError("--symbolic: the equations of this system are too large for a symbolic "
+                             "linearization (millions of terms as trees); leave out --symbolic for A and B "
+                             "as numbers, exact to rounding")
     lay = layout(derivation)
     u_dot = derivation.mass_matrix.LUsolve(derivation.forcing)
     f = sp.Matrix([e for _, e in derivation.kinematic_equations]).col_join(u_dot)

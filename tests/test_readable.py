@@ -42,3 +42,9 @@ def test_reactions_of_a_large_system_are_refused_clearly(tmp_path):
     assert code.exit_code != 0
     assert "constraint forces are not derived for a system this large" in " ".join(code.output.split())
     assert "Traceback" not in code.output and not target.exists()
+
+
+def test_symbolic_linearization_of_a_large_system_is_refused_clearly():
+    result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "whipple_bicycle.yaml"), "--symbolic"])
+    assert result.exit_code != 0 and "leave out --symbolic" in " ".join(result.output.split())
+    assert "Traceback" not in result.output
