@@ -384,7 +384,8 @@ def rotation_motion(rotation, system: System, rates: Rates, gamma=None, differen
     W0 = sp.Matrix([form.dt for form in rotation])
     omega_symbols = product(W, sp.Matrix([S.rate(n) for n in names])) + W0
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(_rest_of_derivative(omega_symbols, system, rates, differentiate))
+    derivative = _rest_of_derivative(omega_symbols, system, rates, differentiate)
+    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(derivative)
     return Motion(sp.ImmutableMatrix(product(W, rates.beta)), sp.ImmutableMatrix(product(W, rates.beta0) + W0),
                   sp.ImmutableMatrix(rest))
 
