@@ -11,6 +11,8 @@ imported on first use, so that ``gacli check`` does not pay for them.
 
 from __future__ import annotations
 
+import sys
+import types
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
@@ -48,3 +50,20 @@ EMITTERS: dict[str, Emitter] = {
 }
 
 __all__ = ["EMITTERS", "Emitter", "emit_c", "emit_latex", "emit_python"]
+
+
+class _CallablePackage(types.ModuleType):
+    """This package, callable as :func:`gacli.api.emit`.
+
+    ``gacli.emit(derivation, "c")`` is the documented API, and importing this
+    package binds the name ``emit`` on ``gacli`` to the package (Python sets
+    a subpackage as its parent's attribute): so the package takes the call.
+    """
+
+    def __call__(self, derivation: Derivation, format: str, **options) -> dict[str, str]:
+        from gacli.api import emit
+
+        return emit(derivation, format, **options)
+
+
+sys.modules[__name__].__class__ = _CallablePackage
