@@ -42,7 +42,8 @@ def shared_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol
                           ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[sp.Expr]]:
     """Common-subexpression elimination in one walk of the graph: ``(replacements, reduced)``.
 
-    Every compound subexpression used more than once is named, in the order
+    Every compound subexpression used more than once is named (expressions
+    only: not the tuples and condition pairs inside Derivative or Piecewise), in the order
     of a post-order walk (so a name is defined before it is used, and the
     order depends only on the expressions' argument order, never on hashes).
     It is what ``sympy.cse`` finds first, without its canonical sorting of
@@ -63,7 +64,7 @@ def shared_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol
             continue
         args = [rebuilt[a] for a in node.args]
         new = node.func(*args) if any(n is not o for n, o in zip(args, node.args)) else node
-        if uses[node] > 1 and not _trivial(new):
+        if uses[node] > 1 and isinstance(new, sp.Expr) and not _trivial(new):
             name = next(symbols)
             replacements.append((name, new))
             new = name

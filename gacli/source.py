@@ -135,7 +135,9 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     if root is not None:
         try:
             return SourceFile(path, text, digest, _Converter(path, text, libyaml=True).convert(root, 0))
-        except _NotLikePyYAML:
+        except (_NotLikePyYAML, SystemFileError):
+            # An error found on libyaml's nodes may hide one PyYAML reports
+            # earlier in the text: errors always come from the reference path.
             pass
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
@@ -155,7 +157,8 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
 
 # Text that libyaml reads where PyYAML's scanner refuses it (found by
 # comparing the two on mutated system files).
-_LIBYAML_DIFFERS = re.compile(r"[\t?]|[|>][-+0-9]*#")
+# A byte-order mark inside the text: libyaml counts it as a column, PyYAML not.
+_LIBYAML_DIFFERS = re.compile(r"[\t?\ufeff]|[|>][-+0-9]*#")
 
 if CParser is not None:
 

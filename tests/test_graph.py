@@ -49,3 +49,16 @@ def test_shared_subexpressions_are_deterministic():
     first = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
     again = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
     assert first == again
+
+
+def test_only_expressions_are_named():
+    t, x, y = sp.symbols("t x y")
+    f, g = sp.Function("f"), sp.Function("g")
+    exprs = [sp.Derivative(f(t), t) * sp.sin(x), sp.Derivative(g(t), t) * sp.cos(x),
+             sp.Piecewise((x, y > 0), (1, True)), sp.Piecewise((x, y > 0), (2, True))]
+    replacements, reduced = shared_subexpressions(exprs, sp.numbered_symbols("_c"))
+    assert all(isinstance(value, sp.Expr) for _, value in replacements)
+    rebuilt = reduced
+    for name, value in reversed(replacements):
+        rebuilt = [e.xreplace({name: value}) for e in rebuilt]
+    assert rebuilt == exprs

@@ -60,6 +60,9 @@ def test_the_shipped_systems_are_read_by_libyaml():
     "a: 1\nb: [1, 2\n",           # a syntax error: PyYAML's message and place
     "a: 1\na: 2\n",               # a duplicate key
     "- &A [1]\n- *B\n",           # an undefined alias
+    "name\ufeff: target\n",        # a byte-order mark mid-line: libyaml counts it as a column
+    "a: !!python/object:os.system x\nb: {c: !y, d: 1}\n",  # a refused tag before a syntax error
+    "a: !&!str x\n",               # a tag libyaml accepts and PyYAML refuses
 ])
 def test_libyaml_and_pyyaml_agree_where_they_differ(text, monkeypatch):
     data = text.encode("utf-8")
