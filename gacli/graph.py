@@ -13,6 +13,28 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 import sympy as sp
 
+# Above this many nodes as a tree, an expression is walked as a graph: the
+# shipped systems other than the bicycle stay under 3,000, the bicycle's
+# equations are millions.
+LARGE_TREE = 20_000
+
+
+def is_small(expr: sp.Expr, limit: int) -> bool:
+    """Whether the tree of ``expr`` has at most ``limit`` nodes (stops counting early).
+
+    ``sympy.count_ops`` walks all of a large expression, which costs more than
+    most of what one would skip with it.
+    """
+    for count, _ in enumerate(sp.preorder_traversal(expr), start=1):
+        if count > limit:
+            return False
+    return True
+
+
+def is_large(expr: sp.Basic) -> bool:
+    """Whether ``expr`` has more than LARGE_TREE nodes as a tree (counting stops there)."""
+    return not is_small(expr, LARGE_TREE)
+
 
 def postorder(exprs: Iterable[sp.Basic]) -> Iterator[sp.Basic]:
     """Each distinct subexpression once, arguments before the expression, in argument order."""

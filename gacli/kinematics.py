@@ -19,6 +19,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
 from gacli.fastdiff import jacobian
+from gacli.graph import is_small
 from gacli.model import Body, Form, System
 
 # Ranks are decided at a random configuration: a generic rank of a matrix of
@@ -291,7 +292,7 @@ _ADJUGATE_MAX = 6
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
     """Cancel rational clutter that elimination leaves, while it is cheap."""
-    return sp.cancel(expr) if S.is_small(expr, 400) else expr
+    return sp.cancel(expr) if is_small(expr, 400) else expr
 
 
 def _error(system: System, location, where: str, message: str, hint: str = "") -> SystemFileError:

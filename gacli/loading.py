@@ -19,6 +19,7 @@ from gacli import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
+from gacli.graph import is_small
 from gacli.model import (
     Body,
     Constraint,
@@ -597,7 +598,7 @@ def _is_zero(expr: sp.Expr, simplify: bool = True) -> bool:
     """
     if expr == 0:
         return True
-    if S.is_small(expr, 200):
+    if is_small(expr, 200):
         try:
             if sp.expand(expr) == 0:
                 return True
@@ -618,7 +619,7 @@ def _is_zero(expr: sp.Expr, simplify: bool = True) -> bool:
 
 
 def _offending_term(expr: sp.Expr, present: set) -> str:
-    if not S.is_small(expr, 400):
+    if not is_small(expr, 400):
         return "a differential appears inside a power or a function"
     for term in sp.Add.make_args(sp.expand(expr)):
         degree = sum(sp.degree(term, d) for d in present if d in term.free_symbols) if term.is_polynomial(*present) else 2

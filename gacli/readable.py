@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.symbols import is_small
+from gacli.graph import LARGE_TREE, is_large, is_small
 
 # sympy.simplify grows quickly with size; above this many operations only
 # cheap rational cancellation is tried.
@@ -18,11 +18,9 @@ SIMPLIFY_OPS = 250
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
-# An equation of motion larger than this many tree nodes is not printed for
-# people: the Whipple bicycle's are millions (a few thousand distinct
-# subexpressions, which the code emitters share); the largest textbook and
-# shipped systems stay under 3,000.
-DISPLAY_NODES = 20_000
+# An equation of motion too large to walk as a tree is not printed for people
+# either: the code emitters share its subexpressions instead.
+DISPLAY_NODES = LARGE_TREE
 TOO_LARGE = ("The equations of this system are too large to print for reading "
              f"(an entry of M or F has more than {DISPLAY_NODES:,} terms as a tree). "
              "Generate code instead, which shares their common subexpressions: "
@@ -59,7 +57,7 @@ class Tidy:
 
 def displayable(d) -> bool:
     """Whether the derivation's M and F are small enough to print as formulas."""
-    return all(is_small(e, DISPLAY_NODES) for e in (*d.mass_matrix, *d.forcing))
+    return not any(is_large(e) for e in (*d.mass_matrix, *d.forcing))
 
 
 def show(expr) -> str:

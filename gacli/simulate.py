@@ -52,7 +52,7 @@ from gacli.equations import Derivation
 from gacli.errors import GacliError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import Name, ParseError, Rate, parse
-from gacli.graph import free_symbols, shared_subexpressions
+from gacli.graph import free_symbols, is_large, shared_subexpressions
 
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 DEFAULT_METHOD = "DOP853"
@@ -410,13 +410,10 @@ def _shared(expr: sp.Expr) -> tuple[list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
     prints the tree, so it is handed the few thousand distinct subexpressions
     as assignments instead (gacli.graph).
     """
-    if S.is_small(expr, _LARGE):
+    if not is_large(expr):
         return [], expr
     replacements, (reduced,) = shared_subexpressions([expr], sp.numbered_symbols("_s"))
     return replacements, reduced
-
-
-_LARGE = 20_000
 
 
 def _arguments(state: Sequence[str], parameters: Sequence[str]) -> list[sp.Symbol]:

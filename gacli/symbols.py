@@ -59,15 +59,3 @@ def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Exp
 def time_differentiator(chain: Mapping[sp.Symbol, sp.Expr]) -> Differentiator:
     """d/dt as one memoised walk (see :mod:`gacli.fastdiff`); reuse it for all entries of a matrix."""
     return Differentiator({T: sp.S.One, **chain})
-
-
-def is_small(expr: sp.Expr, limit: int) -> bool:
-    """Whether the tree of ``expr`` has at most ``limit`` nodes (stops counting early).
-
-    ``sympy.count_ops`` walks all of a large expression, which costs more than
-    most of what one would skip with it.
-    """
-    for count, _ in enumerate(sp.preorder_traversal(expr), start=1):
-        if count > limit:
-            return False
-    return True

@@ -55,10 +55,10 @@ def evaluate(exprs, values):
     import numpy as np
     import sympy as sp
 
+    from gacli.graph import is_large
     from gacli.numeric import Program
-    from gacli.symbols import is_small
 
     exprs = list(exprs)
-    if all(is_small(e, 20_000) for e in exprs):
+    if not any(is_large(e) for e in exprs):
         return np.array([complex(v) for v in sp.Matrix(exprs).xreplace(values).evalf(30)], dtype=complex).real
     return np.array(Program(exprs)({s: complex(v) for s, v in values.items()})).real

@@ -24,6 +24,7 @@ import gacli
 from gacli import symbols as S
 from gacli.equations import Derivation
 from gacli.gibbs import gibbs_coefficients
+from gacli.graph import is_small
 from gacli.model import System
 from gacli.readable import TOO_LARGE, displayable
 
@@ -305,7 +306,7 @@ _ZERO: list[Term] = [(False, "0")]
 
 def tidy(expr: sp.Expr) -> sp.Expr:
     """A simpler equal expression for display, on a small budget."""
-    if not S.is_small(expr, 20 * SIMPLIFY_OPS):
+    if not is_small(expr, 20 * SIMPLIFY_OPS):
         return expr
     if sp.count_ops(expr) > SIMPLIFY_OPS:
         expr = sp.factor_terms(sp.cancel(expr))

@@ -28,8 +28,7 @@ from sympy.printing.codeprinter import PrintMethodNotImplementedError
 from sympy.printing.pycode import PythonCodePrinter
 
 from gacli.coerce import as_expr
-from gacli.graph import free_symbols, shared_subexpressions
-from gacli.symbols import is_small
+from gacli.graph import free_symbols, is_large, shared_subexpressions
 from gacli.errors import EmitError
 
 # What generated code may depend on.
@@ -155,8 +154,6 @@ class Block:
 
 
 CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
-# Above this many tree nodes in one equation, CSE walks the graph (gacli.graph).
-_CANONICAL_CSE_LIMIT = 20_000
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
@@ -168,7 +165,7 @@ def print_block(printer_class, names: Mapping[sp.Symbol, str],
     """
     exprs = [as_expr(expr) for _, expr in equations]
     names_of_temporaries = sp.numbered_symbols(CSE_PREFIX)
-    if all(is_small(e, _CANONICAL_CSE_LIMIT) for e in exprs):
+    if not any(is_large(e) for e in exprs):
         replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
     else:
         # SymPy's canonical ordering counts tree nodes; the bicycle's trees are millions.
