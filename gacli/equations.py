@@ -142,17 +142,17 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     step("generalized forces (14.13)")
     Q = generalized_forces(system, rates, motions)
     step("Gibbs-Appell equations (14.19)")
-    M, inertial = _mass_and_inertial_terms(motions, rates)
+    M, F = _mass_matrix_and_forcing(motions, rates, Q)
     kinematic = tuple((c.name, rates.rate(c.name)) for c in system.coordinates)
     return Derivation(
-        system=system, rates=rates, motions=motions,
-        mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(Q - inertial),
+        system=system, rates=rates, motions=motions, mass_matrix=M, forcing=F,
         generalized_forces=Q, kinematic_equations=kinematic,
     )
 
 
-def _mass_and_inertial_terms(motions: tuple[BodyMotion, ...], rates: Rates) -> tuple[sp.Matrix, sp.Matrix]:
-    """M and the u̇-free part of ∂G/∂u̇ (eq. 14.19 without expanding G).
+def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
+                             Q: sp.ImmutableMatrix) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
+    """M and F = Q − (the u̇-free part of ∂G/∂u̇) (eq. 14.19 without expanding G).
 
     Each entry is collected as a list of terms and summed once: adding whole
     matrices body by body re-flattens ever longer sums. Terms that differ only
@@ -162,72 +162,121 @@ def _mass_and_inertial_terms(motions: tuple[BodyMotion, ...], rates: Rates) -> t
     k = rates.k
     u = sp.Matrix(rates.speeds)
     symmetric = all(m.angular is None or _is_symmetric(m.body.inertia) for m in motions)
-    mass_terms: dict[tuple[int, int], dict[sp.Expr, list[sp.Expr]]] = {}
-    rest_terms: list[dict[sp.Expr, list[sp.Expr]]] = [{} for _ in range(k)]
+    terms = _Terms()
+    mass_terms: dict[tuple[int, int], dict] = {}
+    rest_terms: list[dict] = [{} for _ in range(k)]
     for motion in motions:
         V, m = motion.linear.partials, motion.body.mass
-        _add_quadratic_terms(mass_terms, V, [[m if a == b else 0 for b in range(V.rows)] for a in range(V.rows)],
-                             symmetric)
-        _add_linear_terms(rest_terms, V, [m * a for a in motion.linear.acceleration_rest])
+        terms.add_quadratic(mass_terms, V, [[m if a == b else 0 for b in range(V.rows)] for a in range(V.rows)],
+                            symmetric)
+        terms.add_linear(rest_terms, V, [m * a for a in motion.linear.acceleration_rest])
         if motion.angular is not None:
             W, I = motion.angular.partials, motion.body.inertia
             w = W * u + motion.angular.velocity0
-            _add_quadratic_terms(mass_terms, W, I, symmetric)
+            terms.add_quadratic(mass_terms, W, I, symmetric)
             # Kept whole: the angular terms of different bodies rarely coincide, and splitting
             # I α + ω × Iω would undo the factoring that keeps it small.
-            _add_linear_terms(rest_terms, W, I * motion.angular.acceleration_rest + w.cross(I * w), split=False)
-    M = sp.zeros(k, k)
-    for (i, j), terms in mass_terms.items():
-        M[i, j] = _pythagorean(_sum_grouped(terms))
+            terms.add_linear(rest_terms, W, I * motion.angular.acceleration_rest + w.cross(I * w), split=False)
+    M = [[sp.S.Zero] * k for _ in range(k)]  # lists: setting matrix entries one by one is slow
+    for (i, j), groups in mass_terms.items():
+        M[i][j] = _pythagorean(_sum_grouped(groups))
         if symmetric:
-            M[j, i] = M[i, j]
-    rest = sp.Matrix([_sum_grouped(terms) for terms in rest_terms]) if k else sp.zeros(0, 1)
-    return M, rest
+            M[j][i] = M[i][j]
+    F = [sp.Add(*sp.Add.make_args(Q[s]), _sum_grouped(groups, -1)) for s, groups in enumerate(rest_terms)]
+    return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 
 def _is_symmetric(I: sp.Matrix) -> bool:
     return all(I[a, b] == I[b, a] for a in range(I.rows) for b in range(a))
 
 
-def _add_quadratic_terms(entries, P: sp.Matrix, C, lower_only: bool) -> None:
-    """Add the terms P_ai C_ab P_bj of (Pᵀ C P)_ij, grouped by the geometric factor P_ai P_bj.
+class _Terms:
+    """Products of expressions as monomials (a rational coefficient and powers of bases), grouped by monomial.
 
-    With a symmetric C (every mass matrix m·1 and inertia matrix), Pᵀ C P is
-    symmetric: only i ≥ j is formed and the caller mirrors it.
+    The products P_ai P_bj of eq. (14.19) are mostly formed once to be taken
+    apart again as keys; adding exponents in a dict costs far less than
+    SymPy's Mul, which is called once per group in :func:`_sum_grouped`.
+    A factor Mul would treat beyond adding exponents (a number's root, exp,
+    a non-commutative symbol) sends the product through Mul instead.
     """
-    rows = P.tolist()  # plain lists: matrix indexing is slow
-    C = C.tolist() if isinstance(C, sp.MatrixBase) else C
-    nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
-    for i in range(P.cols):
-        for j in range(i + 1 if lower_only else P.cols):
-            groups = entries.setdefault((i, j), {})
-            for a, p_ai in nonzero[i]:
-                for b, p_bj in nonzero[j]:
-                    if C[a][b] != 0:
-                        _add_term(groups, p_ai * p_bj, C[a][b])
+
+    def __init__(self) -> None:
+        self._memo: dict[sp.Expr, tuple | None] = {}
+
+    def monomial(self, expr: sp.Expr):
+        """(coefficient, ((base, exponent), ...)) or None when only Mul can say."""
+        try:
+            return self._memo[expr]
+        except KeyError:
+            pass
+        coefficient, rest = expr.as_coeff_Mul()
+        powers: dict[sp.Expr, sp.Expr] = {}
+        result = (coefficient, powers)
+        for f in sp.Mul.make_args(rest):
+            base, exp = f.args if f.is_Pow else (f, sp.S.One)
+            if base.is_Number or isinstance(base, sp.exp) or base is sp.E or not f.is_commutative:
+                result = None
+                break
+            powers[base] = powers[base] + exp if base in powers else exp
+        self._memo[expr] = result
+        return result
+
+    def add(self, groups: dict, a: sp.Expr, b: sp.Expr, factor: sp.Expr) -> None:
+        """Record factor·a·b under the monomial of a·b (its coefficient goes to the factor)."""
+        ma, mb = self.monomial(a), self.monomial(b)
+        if ma is None or mb is None:
+            coefficient, key = (a * b).as_coeff_Mul()
+            powers = None
+        else:
+            coefficient = ma[0] * mb[0]
+            powers = dict(ma[1])
+            for base, exp in mb[1].items():
+                powers[base] = powers[base] + exp if base in powers else exp
+            powers = {base: exp for base, exp in powers.items() if exp != 0}
+            key = frozenset(powers.items())
+        entry = groups.get(key)
+        if entry is None:
+            entry = groups[key] = (powers, [])
+        entry[1].append(factor if coefficient is sp.S.One else coefficient * factor)
+
+    def add_quadratic(self, entries, P: sp.Matrix, C, lower_only: bool) -> None:
+        """Add the terms P_ai C_ab P_bj of (Pᵀ C P)_ij, grouped by the geometric factor P_ai P_bj.
+
+        With a symmetric C (every mass matrix m·1 and inertia matrix), Pᵀ C P is
+        symmetric: only i ≥ j is formed and the caller mirrors it.
+        """
+        rows = P.tolist()  # plain lists: matrix indexing is slow
+        C = C.tolist() if isinstance(C, sp.MatrixBase) else C
+        nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
+        for i in range(P.cols):
+            for j in range(i + 1 if lower_only else P.cols):
+                groups = entries.setdefault((i, j), {})
+                for a, p_ai in nonzero[i]:
+                    for b, p_bj in nonzero[j]:
+                        if C[a][b] != 0:
+                            self.add(groups, p_ai, p_bj, C[a][b])
+
+    def add_linear(self, entries, P: sp.Matrix, g, split: bool = True) -> None:
+        """Add the terms of (Pᵀ g)_s, g split into its terms so that equal products share their factors."""
+        for row, g_a in zip(P.tolist(), g):
+            if g_a == 0:
+                continue
+            terms = sp.Add.make_args(g_a) if split else (g_a,)
+            for s, p_as in enumerate(row):
+                if p_as != 0:
+                    for term in terms:
+                        self.add(entries[s], p_as, term, sp.S.One)
 
 
-def _add_linear_terms(entries, P: sp.Matrix, g, split: bool = True) -> None:
-    """Add the terms of (Pᵀ g)_s, g split into its terms so that equal products share their factors."""
-    for row, g_a in zip(P.tolist(), g):
-        if g_a == 0:
-            continue
-        terms = sp.Add.make_args(g_a) if split else (g_a,)
-        for s, p_as in enumerate(row):
-            if p_as != 0:
-                for term in terms:
-                    _add_term(entries[s], p_as * term, sp.S.One)
-
-
-def _add_term(groups: dict[sp.Expr, list[sp.Expr]], product: sp.Expr, factor: sp.Expr) -> None:
-    """Record factor·product under product's symbol part (its numeric coefficient goes to the factor)."""
-    coefficient, key = product.as_coeff_Mul()
-    groups.setdefault(key, []).append(factor if coefficient is sp.S.One else coefficient * factor)
-
-
-def _sum_grouped(groups: dict[sp.Expr, list[sp.Expr]]) -> sp.Expr:
-    """Σ (Σ factors)·key, summed once (one sp.Add per entry)."""
-    return sp.Add(*[sp.Add(*factors) * key for key, factors in groups.items()])
+def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
+    """Σ (Σ factors)·monomial, each product formed by one Mul and the whole by one Add."""
+    signs = () if sign == 1 else (sp.S.NegativeOne,)
+    out = []
+    for key, (powers, factors) in groups.items():
+        rest = (key,) if powers is None else [base if exp is sp.S.One else sp.Pow(base, exp)
+                                              for base, exp in powers.items()]
+        out.append(sp.Mul(*signs, sp.Add(*factors), *rest))
+    return sp.Add(*out)
 
 
 def _pythagorean(expr: sp.Expr) -> sp.Expr:

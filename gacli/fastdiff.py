@@ -124,13 +124,19 @@ def _sum(terms: list[sp.Expr]) -> sp.Expr:
 
 def jacobian(exprs: Iterable[sp.Expr], symbols: Sequence[sp.Symbol]) -> sp.Matrix:
     """∂e_i/∂s_j; one memoised walk per symbol, shared by all the expressions."""
+    rows = jacobian_rows(exprs, symbols)
+    return sp.Matrix(len(rows), len(symbols), [d for row in rows for d in row])
+
+
+def jacobian_rows(exprs: Iterable[sp.Expr], symbols: Sequence[sp.Symbol]) -> list[list[sp.Expr]]:
+    """:func:`jacobian` as a list of rows (no SymPy matrix to build)."""
     exprs = [as_expr(e) for e in exprs]
     free = _symbols_below(exprs, frozenset(symbols))
     columns = []
     for s in symbols:
         partial = Differentiator({s: sp.S.One}, free=free)
         columns.append([partial(e) for e in exprs])
-    return sp.Matrix(len(exprs), len(symbols), lambda i, j: columns[j][i])
+    return [list(row) for row in zip(*columns)] if columns else [[] for _ in exprs]
 
 
 def _symbols_below(exprs: Sequence[sp.Basic], wanted: frozenset) -> dict[sp.Basic, frozenset]:
@@ -145,7 +151,3 @@ def _symbols_below(exprs: Sequence[sp.Basic], wanted: frozenset) -> dict[sp.Basi
         below[node] = found
     return below
 
-
-def gradient(expr: sp.Expr, symbols: Sequence[sp.Symbol]) -> sp.Matrix:
-    """The row (∂e/∂s_1, ..., ∂e/∂s_n)."""
-    return jacobian([expr], symbols)

@@ -13,49 +13,55 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.fastdiff import gradient
+from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
-from gacli.kinematics import BodyMotion, Rates, point_partials, product
+from gacli.kinematics import BodyMotion, Rates, point_partials, product_rows
 from gacli.model import System
 
 
 def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, ...]) -> sp.ImmutableMatrix:
     """The column (Q_1, ..., Q_k), rates in loads replaced by β u + β₀."""
-    Q = sp.zeros(rates.k, 1)
-    Q += _from_forces(system, rates)
-    Q += _from_torques(system, motions)
-    Q += _from_work(system, rates)
-    Q += _from_potential(system, rates)
+    # Terms collected per Q_s and summed once: adding matrices load by load
+    # re-flattens the sums and builds a SymPy matrix each time.
+    terms: list[list[sp.Expr]] = [[] for _ in range(rates.k)]
+    for contribution in (_from_forces(system, rates), _from_torques(system, motions),
+                         _from_work(system, rates), _from_potential(system, rates)):
+        for s, Q_s in enumerate(contribution):
+            terms[s].append(Q_s)
+    Q = [sp.Add(*t) for t in terms]
     substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    return sp.ImmutableMatrix(Q.rows, 1, substitute(list(Q), substitution) if substitution else list(Q))
+    return sp.ImmutableMatrix(rates.k, 1, substitute(Q, substitution) if substitution else Q)
 
 
-def _from_forces(system: System, rates: Rates) -> sp.Matrix:
-    Q = sp.zeros(rates.k, 1)
+def _from_forces(system: System, rates: Rates) -> list[sp.Expr]:
+    Q = [sp.S.Zero] * rates.k
     for force in system.forces:
-        Q += point_partials(force.point, system, rates).T * sp.Matrix(force.vector)
+        V = point_partials(force.point, system, rates)
+        Q = [Q_s + F_s for Q_s, F_s in zip(Q, V.T * sp.Matrix(force.vector))]
     return Q
 
 
-def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> sp.Matrix:
+def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> list[sp.Expr]:
     by_name = {m.body.name: m for m in motions}
     k = motions[0].linear.partials.cols if motions else 0
-    Q = sp.zeros(k, 1)
+    Q = [sp.S.Zero] * k
     for torque in system.torques:
-        Q += by_name[torque.body].angular.partials.T * sp.Matrix(torque.vector)
+        W = by_name[torque.body].angular.partials
+        Q = [Q_s + T_s for Q_s, T_s in zip(Q, W.T * sp.Matrix(torque.vector))]
     return Q
 
 
-def _from_work(system: System, rates: Rates) -> sp.Matrix:
+def _from_work(system: System, rates: Rates) -> list[sp.Expr]:
     if system.work is None:
-        return sp.zeros(rates.k, 1)
+        return []
     c = sp.Matrix([[system.work.coefficient(n) for n in rates.names]])
-    return (c * rates.beta).T
+    return list(c * rates.beta)
 
 
-def _from_potential(system: System, rates: Rates) -> sp.Matrix:
+def _from_potential(system: System, rates: Rates) -> list[sp.Expr]:
     if system.potential == 0:
-        return sp.zeros(rates.k, 1)
+        return []
     coords = [c.name for c in system.coordinates]
-    b, _ = rates.rows(coords)
-    return -product(gradient(system.potential, [S.value(n) for n in coords]), b).T
+    b, _ = rates.row_lists(coords)
+    gradient = jacobian_rows([system.potential], [S.value(n) for n in coords])
+    return [-Q_s for Q_s in product_rows(gradient, b, rates.k)[0]]

@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
-from gacli.fastdiff import jacobian
+from gacli.fastdiff import jacobian, jacobian_rows
 from gacli.graph import is_small
 from gacli.model import Body, Form, System
 
@@ -58,11 +59,26 @@ class Rates:
 
     def rate(self, name: str) -> sp.Expr:
         i = self.names.index(name)
-        return sum((self.beta[i, s] * u for s, u in enumerate(self.speeds)), self.beta0[i])
+        return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if b != 0], self._beta0_column[i])
 
     def rows(self, names) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
         idx = [self.names.index(n) for n in names]
         return self.beta.extract(idx, list(range(self.k))), self.beta0.extract(idx, [0])
+
+    def row_lists(self, names) -> tuple[list[list[sp.Expr]], list[list[sp.Expr]]]:
+        """``rows(names)`` as lists of rows, for the list arithmetic of :func:`product`."""
+        idx = [self.names.index(n) for n in names]
+        return [self._beta_rows[i] for i in idx], [[self._beta0_column[i]] for i in idx]
+
+    # Lists, computed once: indexing a SymPy matrix entry by entry costs more than
+    # the arithmetic done with the entries.
+    @cached_property
+    def _beta_rows(self) -> list[list[sp.Expr]]:
+        return self.beta.tolist()
+
+    @cached_property
+    def _beta0_column(self) -> list[sp.Expr]:
+        return list(self.beta0)
 
 
 @dataclass(frozen=True)
@@ -349,12 +365,10 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None, dif
     ``J`` is ∂r/∂q when the caller has it (see :func:`body_motions`).
     """
     coords = [c.name for c in system.coordinates]
-    if J is None:
-        J = jacobian(position, [S.value(c) for c in coords])
     # Lists, not SymPy matrices, in between: at a few entries per body the
     # matrices' construction costs more than the arithmetic.
-    rows = J.tolist()
-    b, b0 = rates.rows(coords)
+    rows = J if J is not None else jacobian_rows(position, [S.value(c) for c in coords])
+    b, b0 = rates.row_lists(coords)
     moving = S.time_differentiator(function_chain(system))
     explicit = [moving(e) if _moves(e, system) else sp.S.Zero for e in position]
     gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
@@ -363,9 +377,11 @@ def point_motion(position, system: System, rates: Rates, gamma=None, J=None, dif
     velocity_symbols = [_dot(row, qdot) + e for row, e in zip(rows, explicit)]
     rest = [_dot(row, accelerations) + d
             for row, d in zip(rows, _rest_of_derivative(velocity_symbols, system, rates, differentiate))]
-    velocity0 = [v + e for v, e in zip(product(J, b0), explicit)]
-    return Motion(sp.ImmutableMatrix(product(J, b)), sp.ImmutableMatrix(len(position), 1, velocity0),
-                  sp.ImmutableMatrix(len(position), 1, rest))
+    velocity0 = [v + e for (v,), e in zip(product_rows(rows, b0, 1), explicit)]
+    partials = [e for row in product_rows(rows, b, rates.k) for e in row]
+    n = len(position)
+    return Motion(sp.ImmutableMatrix(n, rates.k, partials), sp.ImmutableMatrix(n, 1, velocity0),
+                  sp.ImmutableMatrix(n, 1, rest))
 
 
 def _moves(expr: sp.Expr, system: System) -> bool:
@@ -408,10 +424,14 @@ def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
     if A.cols != B.rows:
         raise ValueError(f"cannot multiply {A.rows}x{A.cols} by {B.rows}x{B.cols}")
     # Plain lists: indexing a SymPy matrix entry by entry costs more than the products.
-    rows, b = A.tolist(), B.tolist()
-    columns = [[(r, b[r][j]) for r in range(B.rows) if b[r][j] != 0] for j in range(B.cols)]
-    entries = [_dot(row, column) for row in rows for column in columns]
+    entries = [e for row in product_rows(A.tolist(), B.tolist(), B.cols) for e in row]
     return sp.Matrix(A.rows, B.cols, entries)
+
+
+def product_rows(rows: list[list[sp.Expr]], b: list[list[sp.Expr]], columns: int) -> list[list[sp.Expr]]:
+    """:func:`product` on lists of rows; B has ``columns`` columns (its rows may be none)."""
+    nonzero = [[(r, b_r[j]) for r, b_r in enumerate(b) if b_r[j] != 0] for j in range(columns)]
+    return [[_dot(row, column) for column in nonzero] for row in rows]
 
 
 def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
@@ -438,12 +458,12 @@ def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
     # One Jacobian of all the positions: the bodies of a chain repeat each
     # other's terms, and one memo per coordinate differentiates each term once.
     positions = [e for body in system.bodies for e in body.position]
-    J = jacobian(positions, [S.value(c.name) for c in system.coordinates])
+    J = jacobian_rows(positions, [S.value(c.name) for c in system.coordinates])
     differentiate = S.time_differentiator(rate_symbols_chain(system))
     out = []
     for i, body in enumerate(system.bodies):
-        rows = J.extract(list(range(3 * i, 3 * i + 3)), list(range(J.cols)))
-        linear = point_motion(body.position, system, rates, gamma=gamma, J=rows, differentiate=differentiate)
+        linear = point_motion(body.position, system, rates, gamma=gamma, J=J[3 * i:3 * i + 3],
+                              differentiate=differentiate)
         angular = (rotation_motion(body.rotation, system, rates, gamma=gamma, differentiate=differentiate)
                    if body.is_rigid else None)
         out.append(BodyMotion(body, linear, angular))
