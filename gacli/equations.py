@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.canonical import product
 from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
@@ -269,13 +270,14 @@ class _Terms:
 
 
 def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
-    """Σ (Σ factors)·monomial, each product formed by one Mul and the whole by one Add."""
-    signs = () if sign == 1 else (sp.S.NegativeOne,)
+    """± Σ (Σ factors)·monomial, each product formed once and the whole by one Add."""
+    coefficient = sp.S.One if sign == 1 else sp.S.NegativeOne
     out = []
     for key, (powers, factors) in groups.items():
-        rest = (key,) if powers is None else [base if exp is sp.S.One else sp.Pow(base, exp)
-                                              for base, exp in powers.items()]
-        out.append(sp.Mul(*signs, sp.Add(*factors), *rest))
+        rest = [key] if powers is None else [base if exp is sp.S.One else sp.Pow(base, exp)
+                                             for base, exp in powers.items()]
+        total = sp.Add(*factors)
+        out.append(product(coefficient, rest if total is sp.S.One else [total, *rest]))
     return sp.Add(*out)
 
 
