@@ -18,6 +18,23 @@ import sympy as sp
 from sympy.core.mul import _args_sortkey
 
 
+def mul(*args: sp.Expr) -> sp.Expr:
+    """``sp.Mul(*args)``, equal to it argument for argument; products among ``args`` are flattened."""
+    args = [a for a in args if a is not sp.S.One]
+    if len(args) < 2:
+        return args[0] if args else sp.S.One
+    if len(args) == 2 and (args[0].is_Rational or args[1].is_Rational):
+        return sp.Mul(*args)  # Mul's two-argument rules (e.g. 3·(2·(x + y)) stays unexpanded)
+    coefficient, factors = sp.S.One, []
+    for a in args:
+        for f in (a.args if a.is_Mul else (a,)):
+            if f.is_Number:
+                coefficient *= f
+            else:
+                factors.append(f)
+    return product(coefficient, factors)
+
+
 def product(coefficient: sp.Rational, factors: Sequence[sp.Expr]) -> sp.Expr:
     """``sp.Mul(coefficient, *factors)``, equal to it argument for argument."""
     if _only_sorting_needed(coefficient, factors):

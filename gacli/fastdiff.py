@@ -22,6 +22,7 @@ from collections.abc import Iterable, Mapping, Sequence
 
 import sympy as sp
 
+from gacli.canonical import mul
 from gacli.coerce import as_expr
 from gacli.graph import postorder
 
@@ -89,7 +90,7 @@ class Differentiator:
             partial = expr.fdiff(i)
             if partial.has(sp.Derivative):
                 return self._fallback(expr)
-            terms.append(partial * darg)
+            terms.append(mul(partial, darg))
         return _sum(terms)
 
     def _fallback(self, expr: sp.Basic) -> sp.Expr:
@@ -104,7 +105,7 @@ def _has_plain_chain_rule(expr: sp.Basic) -> bool:
 
 
 def _product_rule(factors: Sequence[sp.Expr], derivatives: Sequence[sp.Expr]) -> sp.Expr:
-    terms = [sp.Mul(*factors[:i], d, *factors[i + 1:])
+    terms = [mul(*factors[:i], d, *factors[i + 1:])
              for i, d in enumerate(derivatives) if d is not _ZERO]
     return _sum(terms)
 

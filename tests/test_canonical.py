@@ -4,7 +4,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli.canonical import _only_sorting_needed, product
+from gacli.canonical import _only_sorting_needed, mul, product
 
 x, y, z = sp.symbols("x y z")
 a, b = sp.symbols("a b", positive=True)
@@ -67,3 +67,15 @@ def test_sorting_only_products_take_the_fast_path_and_equal_mul(coefficient, pai
             fa.as_base_exp()[0] == fb.as_base_exp()[0] for i, fa in enumerate(factors) for fb in factors[:i])
     got = product(coefficient, factors)
     assert type(got) is type(expected) and got.args == expected.args
+
+
+MUL_ARGS = [*BENIGN, sp.Integer(2), sp.Rational(-1, 3), sp.S.One, sp.S.NegativeOne, sp.Float(1.5), sp.S.Zero,
+            sp.Mul(2, x + y, evaluate=False), -x * sp.sin(y), 3 * a * b, x ** 2, sp.sqrt(2) * z, sp.exp(x), sp.I]
+
+
+@settings(max_examples=3000, deadline=None)
+@given(st.lists(st.sampled_from(MUL_ARGS), min_size=0, max_size=6))
+def test_mul_is_sympy_mul_argument_for_argument(args):
+    expected = sp.Mul(*args)
+    got = mul(*args)
+    assert type(got) is type(expected) and got.args == expected.args and got == expected
