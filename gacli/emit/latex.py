@@ -121,7 +121,8 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     system = derivation.system
     printer = GacliLatexPrinter(latex_names(system), {"fold_func_brackets": True})
     if not displayable(derivation):
-        sections = [_Section("Equations", _text(TOO_LARGE), [])]
+        # Shown in a fragment too: an \input of the file would otherwise show nothing at all.
+        sections = [_Section("Equations", _text(TOO_LARGE), [], shown=True)]
     elif steps:
         sections = _step_sections(derivation)
     else:
@@ -156,6 +157,7 @@ def _fragment(sections) -> list[str]:
     lines: list[str] = []
     for section in sections:
         lines += ["", f"% {section.title}" + (f". {section.note}" if section.note else "")]
+        lines += [r"\noindent " + section.note] if section.shown else []
         lines += _align(section) if section.groups else []
     return lines
 
@@ -242,6 +244,7 @@ class _Section(NamedTuple):
     note: str
     groups: list[list[str]]  # the align* rows of each equation
     gap: str = ""  # extra space between equations, e.g. "[1ex]"
+    shown: bool = False  # in a fragment, the note as text too, not only as a comment
 
 
 def _align(section: _Section) -> list[str]:
@@ -449,7 +452,8 @@ def _text(text: str) -> str:
             out[-1] = rf"\{_ACCENTS[c]}{{{out[-1]}}}"
         else:
             out.append(_text_char(c))
-    return "".join(out)
+    # TeX sets -- and --- as dashes; an option such as --format must keep its two hyphens.
+    return "".join(out).replace("--", "-{}-").replace("-{}--", "-{}-{}-")
 
 
 def _text_char(c: str) -> str:
