@@ -19,6 +19,7 @@ from gacli import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
+from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.model import (
     Body,
@@ -219,14 +220,16 @@ class _Builder:
 
     def _linear_form(self, expr: sp.Expr, text: Scalar, where: str, start: int) -> Form | None:
         names = self.scopes.rate_names
-        diffs = [S.differential(n) for n in names] + [S.DT]
-        problem = _linearity_problem(expr, diffs)
+        free = expr.free_symbols
+        present = [d for d in [S.differential(n) for n in names] + [S.DT] if d in free]
+        # One memoised pass for all the coefficients (sp.diff walks the form once per differential).
+        partials = dict(zip(present, jacobian_rows([expr], present)[0])) if present else {}
+        problem = _linearity_problem(expr, partials)
         if problem:
             self.error(text, where, problem, offset=start)
             return None
-        coefficients = tuple((n, expr.coeff(S.differential(n))) for n in names if S.differential(n) in expr.free_symbols)
-        coefficients = tuple((n, sp.diff(expr, S.differential(n))) for n, _ in coefficients)
-        return Form(tuple((n, c) for n, c in coefficients if c != 0), sp.diff(expr, S.DT))
+        coefficients = ((n, partials.get(S.differential(n), sp.S.Zero)) for n in names)
+        return Form(tuple((n, c) for n, c in coefficients if c != 0), partials.get(S.DT, sp.S.Zero))
 
     def _quasi(self, sym: SymbolDecl) -> QuasiCoordinate:
         form = None
@@ -576,13 +579,16 @@ def _split_equation(text: str) -> list[tuple[int, int | None]] | int:
     return [(0, first), (first + 1, None)]
 
 
-def _linearity_problem(expr: sp.Expr, diffs: list[sp.Symbol]) -> str:
-    """Why ``expr`` is not a linear form in ``diffs`` ('' when it is)."""
-    present = set(diffs) & expr.free_symbols
+def _linearity_problem(expr: sp.Expr, partials: dict[sp.Symbol, sp.Expr]) -> str:
+    """Why ``expr`` is not a linear form in the differentials it has ('' when it is).
+
+    ``partials`` maps each differential present in ``expr`` to ∂expr/∂d.
+    """
+    present = set(partials)
     if not present:
         return "expected a differential form (a combination of differentials such as dx and dt), found no differential"
     for d in sorted(present, key=sp.default_sort_key):
-        if sp.diff(expr, d).free_symbols & present:
+        if partials[d].free_symbols & present:
             return f"the form is not linear in the differentials: {_offending_term(expr, present)}"
     rest = expr.xreplace({d: 0 for d in present})
     if not _is_zero(rest):
