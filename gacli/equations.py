@@ -23,11 +23,11 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.canonical import product
+from gacli.canonical import product as canonical_product
 from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
-from gacli.kinematics import BodyMotion, Rates, body_motions, solve_rates
+from gacli.kinematics import BodyMotion, Rates, body_motions, product, solve_rates
 from gacli.model import System
 
 
@@ -173,11 +173,14 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
         terms.add_linear(rest_terms, V, [m * a for a in motion.linear.acceleration_rest])
         if motion.angular is not None:
             W, I = motion.angular.partials, motion.body.inertia
-            w = W * u + motion.angular.velocity0
+            # kinematics.product, not W * u: SymPy's matrix product multiplies out the zero
+            # entries of W and I and builds each sum pairwise.
+            w = product(W, u) + motion.angular.velocity0
             terms.add_quadratic(mass_terms, W, I, symmetric)
             # Kept whole: the angular terms of different bodies rarely coincide, and splitting
             # I α + ω × Iω would undo the factoring that keeps it small.
-            terms.add_linear(rest_terms, W, I * motion.angular.acceleration_rest + w.cross(I * w), split=False)
+            terms.add_linear(rest_terms, W, product(I, motion.angular.acceleration_rest) + w.cross(product(I, w)),
+                             split=False)
     M = [[sp.S.Zero] * k for _ in range(k)]  # lists: setting matrix entries one by one is slow
     for (i, j), groups in mass_terms.items():
         M[i][j] = _pythagorean(_sum_grouped(groups))
@@ -277,7 +280,7 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
         rest = [key] if powers is None else [base if exp is sp.S.One else sp.Pow(base, exp)
                                              for base, exp in powers.items()]
         total = sp.Add(*factors)
-        out.append(product(coefficient, rest if total is sp.S.One else [total, *rest]))
+        out.append(canonical_product(coefficient, rest if total is sp.S.One else [total, *rest]))
     return sp.Add(*out)
 
 
