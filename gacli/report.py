@@ -113,8 +113,9 @@ def reactions_report(d: Derivation) -> tuple[Section, ...]:
 
     title = "Constraint forces (multipliers of eq. 14.1, see docs/verify.md)"
     if not displayable(d):
-        return (Section(title, ("Not derived for a system this large: they need a symbolic solve of the "
-                                "equations; gacli verify checks the equations without them.",)),)
+        return (Section(title, ("Not written out for a system this large: in closed form they would be "
+                                "millions of terms. The generated code computes them numerically: "
+                                "--format python or --format c with --reactions.",)),)
     tidy = Tidy()
     forces = constraint_forces(d)
     lines = [f"lambda_{i} = {show(tidy(value))}    ({c.text})"

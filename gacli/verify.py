@@ -59,6 +59,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.errors import DerivationError
+from gacli.graph import substitute
 from gacli.model import Body, Form, System
 from gacli.readable import displayable
 
@@ -794,9 +795,9 @@ def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True)
     """
     if not displayable(derivation):
         raise DerivationError(
-            f"{derivation.system.path}: the constraint forces are not derived for a system this large: "
-            "they need a symbolic solve of equations that are millions of terms as trees "
-            "(gacli verify checks the equations without them)")
+            f"{derivation.system.path}: the constraint forces are not derived in closed form for a system "
+            "this large: they need a symbolic solve of equations that are millions of terms as trees "
+            "(reaction_system gives the linear system that generated code solves numerically)")
     lam, fundamental = _multipliers_in_state(derivation)
     lam = lam[:fundamental.constraint_count, :]
     if solved and lam.rows:
@@ -805,6 +806,62 @@ def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True)
     if simplify:
         lam = lam.applyfunc(_tidy)
     return sp.ImmutableMatrix(lam)
+
+
+@dataclass(frozen=True)
+class ReactionSystem:
+    """K z = b for z = (r̈, λ) at a state, the form in which generated code finds λ numerically.
+
+    Eq. (14.10) over all N rates with the relations differentiated, as
+    :func:`_kkt` solves it:
+
+    .. code:: text
+
+        [ mass  −Aᵀ ] [ r̈ ]   [ loads − inertial ]
+        [ A      0  ] [ λ  ] = [ −relation_rest    ]
+
+    with the rates of the dependent coordinates put as β u + β₀, so every
+    entry is in the state (q, u), parameters, inputs, functions and t. λ
+    of the constraints is z[N], ..., z[N + constraint_count − 1].
+    """
+
+    K: sp.ImmutableMatrix
+    b: sp.ImmutableMatrix
+    rates: int
+    constraint_count: int
+
+
+def reaction_system(derivation) -> ReactionSystem:
+    """The linear system of :class:`ReactionSystem` for a derivation.
+
+    For systems whose multipliers are too large to solve for symbolically
+    (:func:`constraint_forces`): the fundamental equations in all the rates
+    stay small even when the reduced ones are millions of terms as trees,
+    and a numeric solve of N + m unknowns costs little at run time.
+    """
+    fundamental = fundamental_equations(derivation.system)
+    names, m = fundamental.names, len(fundamental.relations)
+    N = len(names)
+    rates = derivation.rates
+    velocities = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
+    K = [[sp.S.Zero] * (N + m) for _ in range(N + m)]
+    b: list[sp.Expr] = [sp.S.Zero] * (N + m)
+    for i in range(N):
+        for j in range(N):
+            K[i][j] = fundamental.mass[i, j]
+        for r in range(m):
+            K[i][N + r] = -fundamental.A[r, i]
+        b[i] = fundamental.loads[i, 0] - fundamental.inertial[i, 0]
+    for r in range(m):
+        for j in range(N):
+            K[N + r][j] = fundamental.A[r, j]
+        b[N + r] = -fundamental.relation_rest[r, 0]
+    flat = [e for row in K for e in row] + b
+    # substitute walks the expressions as graphs: the dependent rates are large DAGs.
+    flat = substitute(flat, velocities) if velocities else flat
+    size = (N + m) ** 2
+    return ReactionSystem(sp.ImmutableMatrix(N + m, N + m, flat[:size]), sp.ImmutableMatrix(N + m, 1, flat[size:]),
+                          N, fundamental.constraint_count)
 
 
 def reaction_function(derivation) -> Callable[[Mapping], np.ndarray]:

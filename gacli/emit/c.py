@@ -37,9 +37,11 @@ from gacli.emit.naming import (
     lower_triangle,
     mass_matrix_equations,
     reaction_equations,
+    reaction_solve,
 )
 from gacli.emit.printers import Block, GacliCPrinter, print_block
 from gacli.equations import Derivation
+from gacli.readable import displayable
 
 INDENT = "    "
 ARGUMENTS = ("t", "x", "p", "r")
@@ -232,13 +234,92 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
 
 def _reactions_declaration(derivation: Derivation, lay: Layout) -> str:
     count = len(derivation.system.constraints)
+    numeric = ("" if displayable(derivation) else
+               "\n   Found by solving the fundamental equations numerically; all NaN when they are singular.")
     return (f"\n/* The constraint forces: {count} multipliers, one per constraint in the file's order\n"
-            f"   (docs/verify.md gives their sign and units). */\n{_signature(lay, 'reactions')};\n")
+            f"   (docs/verify.md gives their sign and units).{numeric} */\n{_signature(lay, 'reactions')};\n")
 
 
 def _reactions(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, reaction_equations(derivation))
-    return _function(lay, "reactions", [], block, _assign("lambda", block.results))
+    solve = reaction_solve(derivation)
+    if solve is None:
+        block = _block(lay, reaction_equations(derivation))
+        return _function(lay, "reactions", [], block, _assign("lambda", block.results))
+    block = _block(lay, solve.equations)
+    entries, rhs = block.results[:len(solve.nonzero)], block.results[len(solve.nonzero):]
+    n = solve.size
+    locals_ = [
+        "/* The fundamental equations in all the rates and multipliers (docs/verify.md), solved",
+        "   numerically: closed-form multipliers of a system this large would be millions of terms. */",
+        f"double K[{n * n}] = {{0.0}};",
+        f"double b[{n}];",
+        "int i;",
+    ]
+    assignments = [
+        *(f"K[{i * n + j}] = {code};" for (i, j), code in zip(solve.nonzero, entries)),
+        *_assign("b", rhs),
+        f"if ({lay.function('lu_solve')}({n}, K, b) != 0) {{",
+        f"{INDENT}for (i = 0; i < {solve.count}; ++i) {{",
+        f"{INDENT * 2}lambda[i] = NAN;",
+        f"{INDENT}}}",
+        f"{INDENT}return;",
+        "}",
+        f"for (i = 0; i < {solve.count}; ++i) {{",
+        f"{INDENT}lambda[i] = b[{solve.first} + i];",
+        "}",
+    ]
+    return LU_SOLVE.substitute(name=lay.system) + _function(lay, "reactions", locals_, block, assignments)
+
+
+LU_SOLVE = Template('''
+/* Solve K z = b in place (n*n, row-major) by LU with partial pivoting: b
+   becomes z. Returns 0, or j + 1 when column j has no nonzero pivot. */
+static int ${name}_lu_solve(int n, double *K, double *b)
+{
+    int i, j, s;
+    for (j = 0; j < n; ++j) {
+        int p = j;
+        double big = fabs(K[j*n + j]);
+        for (i = j + 1; i < n; ++i) {
+            if (fabs(K[i*n + j]) > big) {
+                big = fabs(K[i*n + j]);
+                p = i;
+            }
+        }
+        if (!(big > 0.0)) {
+            return j + 1;
+        }
+        if (p != j) {
+            double v;
+            for (s = 0; s < n; ++s) {
+                v = K[j*n + s];
+                K[j*n + s] = K[p*n + s];
+                K[p*n + s] = v;
+            }
+            v = b[j];
+            b[j] = b[p];
+            b[p] = v;
+        }
+        for (i = j + 1; i < n; ++i) {
+            const double f = K[i*n + j]/K[j*n + j];
+            if (f != 0.0) {
+                for (s = j + 1; s < n; ++s) {
+                    K[i*n + s] -= f*K[j*n + s];
+                }
+                b[i] -= f*b[j];
+            }
+        }
+    }
+    for (i = n - 1; i >= 0; --i) {
+        double v = b[i];
+        for (s = i + 1; s < n; ++s) {
+            v -= K[i*n + s]*b[s];
+        }
+        b[i] = v/K[i*n + i];
+    }
+    return 0;
+}
+''')
 
 
 def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:

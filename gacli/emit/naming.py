@@ -389,3 +389,35 @@ def reaction_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
 
     forces = constraint_forces(derivation, simplify=False)
     return [(f"lambda[{i}]", forces[i]) for i in range(len(forces))]
+
+
+@dataclass(frozen=True)
+class ReactionSolve:
+    """λ found by a numeric solve in the generated code: K z = b, λ = z[first:first + count].
+
+    For systems too large to print, whose symbolic λ (:func:`reaction_equations`)
+    would need a solve of equations millions of terms long; K and b are the
+    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`),
+    which stay small.
+    """
+
+    size: int
+    first: int
+    count: int
+    nonzero: tuple[tuple[int, int], ...]  # the entries of K that are not identically 0, row-major
+    equations: list[tuple[str, sp.Expr]]  # those entries of K, then the size entries of b
+
+
+def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
+    """How generated code finds λ numerically; None when :func:`reaction_equations` gives it in closed form."""
+    from gacli.readable import displayable
+    from gacli.verify import reaction_system
+
+    if displayable(derivation):
+        return None
+    system = reaction_system(derivation)
+    size = system.K.rows
+    nonzero = tuple((i, j) for i in range(size) for j in range(size) if system.K[i, j] != 0)
+    equations = [(f"K[{i}, {j}]", system.K[i, j]) for i, j in nonzero]
+    equations += [(f"b[{i}]", system.b[i]) for i in range(size)]
+    return ReactionSolve(size, system.rates, system.constraint_count, nonzero, equations)

@@ -35,6 +35,7 @@ from gacli.emit.naming import (
     lower_mass_matrix_equations,
     mass_matrix_equations,
     reaction_equations,
+    reaction_solve,
 )
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.equations import Derivation
@@ -168,8 +169,22 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
 
 
 def _reactions(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, reaction_equations(derivation))
-    body = [*_prologue(lay, block), "return numpy.array([", *_items(block.results, 1), "], dtype=float)"]
+    solve = reaction_solve(derivation)
+    if solve is None:
+        block = _block(lay, reaction_equations(derivation))
+        body = [*_prologue(lay, block), "return numpy.array([", *_items(block.results, 1), "], dtype=float)"]
+        return _function("reactions", lay, body)
+    block = _block(lay, solve.equations)
+    entries, rhs = block.results[:len(solve.nonzero)], block.results[len(solve.nonzero):]
+    body = [
+        *_prologue(lay, block),
+        "# The fundamental equations in all the rates and multipliers (docs/verify.md), solved numerically:",
+        "# closed-form multipliers of a system this large would be millions of terms long.",
+        f"K = numpy.zeros(({solve.size}, {solve.size}))",
+        *(f"K[{i}, {j}] = {code}" for (i, j), code in zip(solve.nonzero, entries)),
+        "b = numpy.array([", *_items(rhs, 1), "], dtype=float)",
+        f"return numpy.linalg.solve(K, b)[{solve.first}:{solve.first + solve.count}]",
+    ]
     return _function("reactions", lay, body)
 
 
