@@ -280,9 +280,9 @@ def load_generated(derivation: Derivation) -> ModuleType:
 
 
 class _EvaluationFailed(Exception):
-    def __init__(self, t: float, error: Exception) -> None:
+    def __init__(self, t: float, x: np.ndarray, error: Exception) -> None:
         super().__init__(str(error))
-        self.t, self.error = t, error
+        self.t, self.x, self.error = t, np.array(x, dtype=float), error
 
 
 def _integrate(solve_ivp, problem: "_Problem", spec: SimulationSpec, progress):
@@ -293,13 +293,19 @@ def _integrate(solve_ivp, problem: "_Problem", spec: SimulationSpec, progress):
         try:
             return problem.module.rhs(t, x, problem.p, problem.r)
         except (ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-            raise _EvaluationFailed(t, exc) from exc
+            raise _EvaluationFailed(t, x, exc) from exc
 
     try:
         solution = solve_ivp(fun, (0.0, spec.t_end), problem.x0, method=spec.method,
                              rtol=spec.rtol, atol=spec.atol, dense_output=True)
     except _EvaluationFailed as exc:
-        raise SimulationError([f"the equations cannot be evaluated at t = {exc.t:.6g}: {exc.error}"]) from None
+        message = f"the equations cannot be evaluated at t = {exc.t:.6g}: {exc.error}"
+        if isinstance(exc.error, np.linalg.LinAlgError):
+            # The usual cause in a model that was fine at t = 0: it has moved to a configuration
+            # where its constraints lose rank (a wheel lying flat), not a failure of the integrator.
+            message += " (the motion has reached a configuration where the model is singular)"
+        where = ", ".join(f"{n} = {_g(v)}" for n, v in zip(problem.state, exc.x))
+        raise SimulationError([f"{message}; the state there: {where}"]) from None
     if solution.status < 0:
         reached = solution.t[-1] if len(solution.t) else 0.0
         raise SimulationError([f"the integration stopped at t = {reached:.6g}: {solution.message}"])

@@ -261,6 +261,14 @@ def test_without_the_extra_the_error_says_what_to_install(monkeypatch, tmp_path)
         check(tmp_path / "plot.png")
 
 
-def test_an_input_that_cannot_be_evaluated_stops_with_the_time():
-    with pytest.raises(SimulationError, match=r"cannot be evaluated at t = 1\.\d*: math domain error"):
+def test_an_input_that_cannot_be_evaluated_stops_with_the_time_and_the_state():
+    with pytest.raises(SimulationError, match=r"cannot be evaluated at t = 1\.\d*: math domain error; "
+                                              r"the state there: r = [-\d.]+, theta = "):
         run("particle_in_plane", init=["r=1,dot(q)=1"], input=["R=sqrt(1-t),S=0"], t_end=2.0)
+
+
+def test_a_bicycle_that_falls_flat_stops_at_the_singular_configuration():
+    # Ridden backwards it is unstable; lying flat, its rolling constraints lose rank and M is singular.
+    with pytest.raises(SimulationError, match=r"not positive definite \(the motion has reached a "
+                                              r"configuration where the model is singular\); the state there: "):
+        run("whipple_bicycle", init=["dot(wheel_R)=-16.6667,dot(roll)=0.1"], t_end=4.0, points=11)
