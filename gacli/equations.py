@@ -186,7 +186,7 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
         M[i][j] = _pythagorean(_sum_grouped(groups))
         if symmetric:
             M[j][i] = M[i][j]
-    F = [sp.Add(*sp.Add.make_args(Q[s]), _sum_grouped(groups, -1)) for s, groups in enumerate(rest_terms)]
+    F = [sp.Add(Q[s], _sum_grouped(groups, -1)) for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 
@@ -216,7 +216,7 @@ class _Terms:
         coefficient, rest = expr.as_coeff_Mul()
         powers: dict[sp.Expr, sp.Expr] = {}
         result = (coefficient, powers)
-        for f in sp.Mul.make_args(rest):
+        for f in () if rest is sp.S.One else sp.Mul.make_args(rest):  # a number: no powers at all
             base, exp = f.args if f.is_Pow else (f, sp.S.One)
             if base.is_Number or isinstance(base, sp.exp) or base is sp.E or not f.is_commutative:
                 result = None

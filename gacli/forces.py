@@ -24,7 +24,7 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     # Terms collected per Q_s and summed once: adding matrices load by load
     # re-flattens the sums and builds a SymPy matrix each time.
     terms: list[list[sp.Expr]] = [[] for _ in range(rates.k)]
-    for contribution in (_from_forces(system, rates), _from_torques(system, motions),
+    for contribution in (*_from_forces(system, rates), *_from_torques(system, motions),
                          _from_work(system, rates), _from_potential(system, rates)):
         for s, Q_s in enumerate(contribution):
             terms[s].append(Q_s)
@@ -33,22 +33,15 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     return sp.ImmutableMatrix(rates.k, 1, substitute(Q, substitution) if substitution else Q)
 
 
-def _from_forces(system: System, rates: Rates) -> list[sp.Expr]:
-    Q = [sp.S.Zero] * rates.k
-    for force in system.forces:
-        V = point_partials(force.point, system, rates)
-        Q = [Q_s + F_s for Q_s, F_s in zip(Q, V.T * sp.Matrix(force.vector))]
-    return Q
+def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:
+    """F·V_s of each force, one list per force."""
+    return [list(point_partials(force.point, system, rates).T * sp.Matrix(force.vector)) for force in system.forces]
 
 
-def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> list[sp.Expr]:
+def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> list[list[sp.Expr]]:
+    """T·Ω_s of each torque, one list per torque."""
     by_name = {m.body.name: m for m in motions}
-    k = motions[0].linear.partials.cols if motions else 0
-    Q = [sp.S.Zero] * k
-    for torque in system.torques:
-        W = by_name[torque.body].angular.partials
-        Q = [Q_s + T_s for Q_s, T_s in zip(Q, W.T * sp.Matrix(torque.vector))]
-    return Q
+    return [list(by_name[torque.body].angular.partials.T * sp.Matrix(torque.vector)) for torque in system.torques]
 
 
 def _from_work(system: System, rates: Rates) -> list[sp.Expr]:

@@ -11,6 +11,7 @@ acceleration V u̇ + a_rest (eq. 14.14), where V holds the partial velocities
 from __future__ import annotations
 
 import random
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -65,20 +66,20 @@ class Rates:
         idx = [self.names.index(n) for n in names]
         return self.beta.extract(idx, list(range(self.k))), self.beta0.extract(idx, [0])
 
-    def row_lists(self, names) -> tuple[list[list[sp.Expr]], list[list[sp.Expr]]]:
-        """``rows(names)`` as lists of rows, for the list arithmetic of :func:`product`."""
+    def row_lists(self, names) -> tuple[list[tuple[sp.Expr, ...]], list[tuple[sp.Expr]]]:
+        """``rows(names)`` as sequences of rows, for the list arithmetic of :func:`product_rows`."""
         idx = [self.names.index(n) for n in names]
-        return [self._beta_rows[i] for i in idx], [[self._beta0_column[i]] for i in idx]
+        return [self._beta_rows[i] for i in idx], [(self._beta0_column[i],) for i in idx]
 
-    # Lists, computed once: indexing a SymPy matrix entry by entry costs more than
-    # the arithmetic done with the entries.
+    # Tuples, computed once: indexing a SymPy matrix entry by entry costs more than
+    # the arithmetic done with the entries, and callers share them.
     @cached_property
-    def _beta_rows(self) -> list[list[sp.Expr]]:
-        return self.beta.tolist()
+    def _beta_rows(self) -> tuple[tuple[sp.Expr, ...], ...]:
+        return tuple(tuple(row) for row in self.beta.tolist())
 
     @cached_property
-    def _beta0_column(self) -> list[sp.Expr]:
-        return list(self.beta0)
+    def _beta0_column(self) -> tuple[sp.Expr, ...]:
+        return tuple(self.beta0)
 
 
 @dataclass(frozen=True)
@@ -428,7 +429,8 @@ def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
     return sp.Matrix(A.rows, B.cols, entries)
 
 
-def product_rows(rows: list[list[sp.Expr]], b: list[list[sp.Expr]], columns: int) -> list[list[sp.Expr]]:
+def product_rows(rows: Sequence[Sequence[sp.Expr]], b: Sequence[Sequence[sp.Expr]],
+                 columns: int) -> list[list[sp.Expr]]:
     """:func:`product` on lists of rows; B has ``columns`` columns (its rows may be none)."""
     nonzero = [[(r, b_r[j]) for r, b_r in enumerate(b) if b_r[j] != 0] for j in range(columns)]
     return [[_dot(row, column) for column in nonzero] for row in rows]

@@ -94,3 +94,23 @@ def test_spinning_top_against_lagrange(rng):
         ddq = ddpsi - np.sin(theta) * dtheta * dphi + np.cos(theta) * ddphi
         want = np.array([ddphi, ddtheta, ddq])
         assert np.linalg.norm(got - want) <= 1e-10 * max(1.0, np.linalg.norm(want))
+
+
+def test_terms_that_differ_only_in_mass_share_one_sum_of_masses():
+    # A unit partial velocity (a slider) and l·cos(q) reach the same product l·cos(q) in M[q, x]
+    # from two bodies; it must be one term with the sum of their masses, and equal the kinetic
+    # energy's Hessian (T = ½ Σ m v², computed here independently).
+    from gacli.equations import derive
+    from gacli.loading import loads
+
+    d = derive(loads("gacli: 1\nname: mixed\nparameters: [m1, m2, l]\ncoordinates: [x, q]\n"
+                     "bodies:\n  a: {mass: m1, position: [x + l*sin(q), 0]}\n"
+                     "  b: {mass: m2, position: [l*x + sin(q), 0]}\n"))
+    from gacli import symbols as S
+
+    m1, m2, l, q = (S.value(n) for n in ("m1", "m2", "l", "q"))
+    dx, dq = S.rate("x"), S.rate("q")
+    T = (m1 * (dx + l * sp.cos(q) * dq) ** 2 + m2 * (l * dx + sp.cos(q) * dq) ** 2) / 2
+    hessian = sp.hessian(T, (dx, dq))
+    assert sp.simplify(d.mass_matrix - hessian) == sp.zeros(2, 2)
+    assert len(sp.Add.make_args(d.mass_matrix[1, 0])) == 1

@@ -453,7 +453,7 @@ def _text(text: str) -> str:
         else:
             out.append(_text_char(c))
     # TeX sets -- and --- as dashes; an option such as --format must keep its two hyphens.
-    return "".join(out).replace("--", "-{}-").replace("-{}--", "-{}-{}-")
+    return re.sub(r"-(?=-)", "-{}", "".join(out))
 
 
 def _text_char(c: str) -> str:
