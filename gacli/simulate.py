@@ -300,7 +300,7 @@ def _integrate(solve_ivp, problem: "_Problem", spec: SimulationSpec, progress):
                              rtol=spec.rtol, atol=spec.atol, dense_output=True)
     except _EvaluationFailed as exc:
         message = f"the equations cannot be evaluated at t = {exc.t:.6g}: {exc.error}"
-        if isinstance(exc.error, np.linalg.LinAlgError):
+        if isinstance(exc.error, np.linalg.LinAlgError) and exc.t > 0:
             # The usual cause in a model that was fine at t = 0: it has moved to a configuration
             # where its constraints lose rank (a wheel lying flat), not a failure of the integrator.
             message += " (the motion has reached a configuration where the model is singular)"

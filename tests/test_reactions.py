@@ -146,3 +146,59 @@ def test_bicycle_reactions_in_c_agree_with_python(bicycle_module, tmp_path, rng)
         out = np.zeros(len(d.system.constraints))
         function(0.0, x.ctypes.data_as(pointer), p.ctypes.data_as(pointer), None, out.ctypes.data_as(pointer))
         np.testing.assert_allclose(out, m.reactions(0.0, x, p), rtol=1e-10, atol=1e-9)
+
+
+def _flat(module):
+    x = np.zeros(len(module.STATE))
+    x[module.STATE.index("roll")] = np.pi / 2  # lying flat: the rolling constraints lose rank
+    x[module.STATE.index("dot(wheel_R)")] = 1.0
+    return x
+
+
+def test_bicycle_reactions_lying_flat_are_an_error_not_numbers(bicycle_module, tmp_path):
+    m = bicycle_module
+    p = np.array([m.DEFAULTS[name] for name in m.PARAMETERS])
+    with pytest.raises(np.linalg.LinAlgError, match="singular"):
+        m.reactions(0.0, _flat(m), p)
+    gcc = require_tool("gcc")
+    for file, text in emit_c(derived("whipple_bicycle"), reactions=True).items():
+        (tmp_path / file).write_text(text)
+    library = tmp_path / "libflat.so"
+    subprocess.run([gcc, "-std=c99", "-O1", "-shared", "-fPIC", str(tmp_path / "whipple_bicycle.c"),
+                    "-o", str(library), "-lm"], check=True)
+    function = ctypes.CDLL(str(library)).whipple_bicycle_reactions
+    pointer = ctypes.POINTER(ctypes.c_double)
+    function.argtypes = [ctypes.c_double, pointer, pointer, pointer, pointer]
+    out = np.zeros(5)
+    x = _flat(m)
+    function(0.0, x.ctypes.data_as(pointer), p.ctypes.data_as(pointer), None, out.ctypes.data_as(pointer))
+    assert np.isnan(out).all()
+
+
+@pytest.mark.parametrize("name", [*CASES, "differential_drive"])
+def test_the_numeric_route_in_generated_python_equals_the_closed_form(name, tmp_path, rng, monkeypatch):
+    # The route large systems take, forced on small ones; differential_drive repeats a constraint
+    # row (two wheels on one axle), where both give the minimum-norm multipliers.
+    import gacli.readable
+
+    d = derived(name)
+    monkeypatch.setattr(gacli.readable, "displayable", lambda derivation: False)
+    ((file, text),) = emit_python(d, reactions=True).items()
+    assert "_K = numpy.zeros" in text
+    (tmp_path / file).write_text(text)
+    spec = importlib.util.spec_from_file_location(f"numeric_{name}", tmp_path / file)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    monkeypatch.undo()
+    for _ in range(3):
+        x, p, r, expected = sample(d, rng)
+        np.testing.assert_allclose(module.reactions(0.0, x, p, r), expected, rtol=1e-9, atol=1e-9)
+
+
+def test_c_refuses_the_numeric_route_with_repeated_rows(monkeypatch):
+    import gacli.readable
+    from gacli.errors import EmitError
+
+    monkeypatch.setattr(gacli.readable, "displayable", lambda derivation: False)
+    with pytest.raises(EmitError, match="repeated constraint rows"):
+        emit_c(derived("differential_drive"), reactions=True)

@@ -40,7 +40,7 @@ def test_reactions_of_a_large_system_are_computed_by_the_generated_code(tmp_path
     target = tmp_path / "bicycle.py"
     code = CliRunner().invoke(app, ["derive", bicycle, "--format", "python", "--reactions", "--output", str(target)])
     assert code.exit_code == 0, code.output
-    assert "numpy.linalg.solve(K, b)" in target.read_text()
+    assert "numpy.linalg.solve(_K, _b)" in target.read_text()
 
 
 def test_symbolic_linearization_of_a_large_system_is_refused_clearly():

@@ -272,3 +272,10 @@ def test_a_bicycle_that_falls_flat_stops_at_the_singular_configuration():
     with pytest.raises(SimulationError, match=r"not positive definite \(the motion has reached a "
                                               r"configuration where the model is singular\); the state there: "):
         run("whipple_bicycle", init=["dot(wheel_R)=-16.6667,dot(roll)=0.1"], t_end=4.0, points=11)
+
+
+def test_a_mass_matrix_wrong_from_the_start_blames_no_configuration():
+    # Negative mass: the parameters are at fault at t = 0, not a motion that reached a singular point.
+    with pytest.raises(SimulationError, match=r"at t = 0: the mass matrix is not positive definite; the state") as caught:
+        run("cylinder_in_cylinder", set=["M=-1"], t_end=1.0)
+    assert "configuration" not in str(caught.value)

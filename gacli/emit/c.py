@@ -41,6 +41,7 @@ from gacli.emit.naming import (
 )
 from gacli.emit.printers import Block, GacliCPrinter, print_block
 from gacli.equations import Derivation
+from gacli.errors import EmitError
 from gacli.readable import displayable
 
 INDENT = "    "
@@ -245,27 +246,32 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
     if solve is None:
         block = _block(lay, reaction_equations(derivation))
         return _function(lay, "reactions", [], block, _assign("lambda", block.results))
+    if solve.redundant:
+        raise EmitError(
+            f"{derivation.system.path}: the constraint forces of a system this large with repeated constraint "
+            "rows (the reaction shared among them is statically indeterminate) are generated for Python only, "
+            "as the minimum-norm solution; leave out --reactions for C")
     block = _block(lay, solve.equations)
     entries, rhs = block.results[:len(solve.nonzero)], block.results[len(solve.nonzero):]
     n = solve.size
     locals_ = [
         "/* The fundamental equations in all the rates and multipliers (docs/verify.md), solved",
         "   numerically: closed-form multipliers of a system this large would be millions of terms. */",
-        f"double K[{n * n}] = {{0.0}};",
-        f"double b[{n}];",
-        "int i;",
+        f"double _K[{n * n}] = {{0.0}};",
+        f"double _b[{n}];",
+        "int _i;",
     ]
     assignments = [
-        *(f"K[{i * n + j}] = {code};" for (i, j), code in zip(solve.nonzero, entries)),
-        *_assign("b", rhs),
-        f"if ({lay.function('lu_solve')}({n}, K, b) != 0) {{",
-        f"{INDENT}for (i = 0; i < {solve.count}; ++i) {{",
-        f"{INDENT * 2}lambda[i] = NAN;",
+        *(f"_K[{i * n + j}] = {code};" for (i, j), code in zip(solve.nonzero, entries)),
+        *_assign("_b", rhs),
+        f"if ({lay.function('lu_solve')}({n}, _K, _b) != 0) {{",
+        f"{INDENT}for (_i = 0; _i < {solve.count}; ++_i) {{",
+        f"{INDENT * 2}lambda[_i] = NAN;",
         f"{INDENT}}}",
         f"{INDENT}return;",
         "}",
-        f"for (i = 0; i < {solve.count}; ++i) {{",
-        f"{INDENT}lambda[i] = b[{solve.first} + i];",
+        f"for (_i = 0; _i < {solve.count}; ++_i) {{",
+        f"{INDENT}lambda[_i] = _b[{solve.first} + _i];",
         "}",
     ]
     return LU_SOLVE.substitute(name=lay.system) + _function(lay, "reactions", locals_, block, assignments)
@@ -273,10 +279,18 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
 
 LU_SOLVE = Template('''
 /* Solve K z = b in place (n*n, row-major) by LU with partial pivoting: b
-   becomes z. Returns 0, or j + 1 when column j has no nonzero pivot. */
+   becomes z. Returns 0, or j + 1 when pivot j is below n*eps times the
+   largest entry of K (K is singular to working precision) or not a number. */
 static int ${name}_lu_solve(int n, double *K, double *b)
 {
     int i, j, s;
+    double tiny = 0.0;
+    for (i = 0; i < n*n; ++i) {
+        if (fabs(K[i]) > tiny) {
+            tiny = fabs(K[i]);
+        }
+    }
+    tiny *= n*2.220446049250313e-16;
     for (j = 0; j < n; ++j) {
         int p = j;
         double big = fabs(K[j*n + j]);
@@ -286,7 +300,7 @@ static int ${name}_lu_solve(int n, double *K, double *b)
                 p = i;
             }
         }
-        if (!(big > 0.0)) {
+        if (!(big > tiny)) {
             return j + 1;
         }
         if (p != j) {

@@ -109,7 +109,7 @@ MATH_H_NAMES = frozenset("""
 RESERVED = GENERATED_NAMES | C_KEYWORDS | MATH_H_NAMES | frozenset(keyword.kwlist)
 
 # Generated function names, after "<name>_"; the C source calls the last one.
-C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "cholesky_solve")
+C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "reactions", "lu_solve", "cholesky_solve")
 
 _RATE_NAME = re.compile(r"^(dot|ddot|d(\d+))\((.+)\)$")
 _RATE_ORDERS = {"dot": 1, "ddot": 2}
@@ -397,13 +397,13 @@ class ReactionSolve:
 
     For systems too large to print, whose symbolic λ (:func:`reaction_equations`)
     would need a solve of equations millions of terms long; K and b are the
-    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`),
-    which stay small.
+    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`).
     """
 
     size: int
     first: int
     count: int
+    redundant: bool  # K is singular by construction: λ is the minimum-norm solution
     nonzero: tuple[tuple[int, int], ...]  # the entries of K that are not identically 0, row-major
     equations: list[tuple[str, sp.Expr]]  # those entries of K, then the size entries of b
 
@@ -420,4 +420,4 @@ def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
     nonzero = tuple((i, j) for i in range(size) for j in range(size) if system.K[i, j] != 0)
     equations = [(f"K[{i}, {j}]", system.K[i, j]) for i, j in nonzero]
     equations += [(f"b[{i}]", system.b[i]) for i in range(size)]
-    return ReactionSolve(size, system.rates, system.constraint_count, nonzero, equations)
+    return ReactionSolve(size, system.rates, system.constraint_count, system.redundant, nonzero, equations)

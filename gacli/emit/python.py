@@ -176,14 +176,25 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
         return _function("reactions", lay, body)
     block = _block(lay, solve.equations)
     entries, rhs = block.results[:len(solve.nonzero)], block.results[len(solve.nonzero):]
+    if solve.redundant:
+        # Repeated constraint rows: the share of the reaction among them is not determined;
+        # the minimum-norm one, as the closed form gives for smaller systems.
+        solved = ["_z = numpy.linalg.lstsq(_K, _b, rcond=1e-10)[0]"]
+    else:
+        solved = [
+            "if numpy.linalg.cond(_K) > 1e12:  # about the precision left in the multipliers: 1e-4",
+            f"{INDENT}raise numpy.linalg.LinAlgError('the fundamental equations are singular at this state')",
+            "_z = numpy.linalg.solve(_K, _b)",
+        ]
     body = [
         *_prologue(lay, block),
         "# The fundamental equations in all the rates and multipliers (docs/verify.md), solved numerically:",
         "# closed-form multipliers of a system this large would be millions of terms long.",
-        f"K = numpy.zeros(({solve.size}, {solve.size}))",
-        *(f"K[{i}, {j}] = {code}" for (i, j), code in zip(solve.nonzero, entries)),
-        "b = numpy.array([", *_items(rhs, 1), "], dtype=float)",
-        f"return numpy.linalg.solve(K, b)[{solve.first}:{solve.first + solve.count}]",
+        f"_K = numpy.zeros(({solve.size}, {solve.size}))",
+        *(f"_K[{i}, {j}] = {code}" for (i, j), code in zip(solve.nonzero, entries)),
+        "_b = numpy.array([", *_items(rhs, 1), "], dtype=float)",
+        *solved,
+        f"return _z[{solve.first}:{solve.first + solve.count}]",
     ]
     return _function("reactions", lay, body)
 
