@@ -207,8 +207,8 @@ class _Terms:
     def __init__(self) -> None:
         self._memo: dict[sp.Expr, tuple | None] = {}
 
-    def monomial(self, expr: sp.Expr):
-        """(coefficient, ((base, exponent), ...)) or None when only Mul can say."""
+    def monomial(self, expr: sp.Expr) -> tuple[sp.Expr, dict[sp.Expr, sp.Expr]] | None:
+        """(coefficient, {base: exponent}), or None when only Mul can say what the product is."""
         try:
             return self._memo[expr]
         except KeyError:
