@@ -20,7 +20,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
-from gacli.fastdiff import jacobian, jacobian_rows
+from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.model import Body, Form, System
 
@@ -62,12 +62,8 @@ class Rates:
         i = self.names.index(name)
         return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if b != 0], self._beta0_column[i])
 
-    def rows(self, names) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
-        idx = [self.names.index(n) for n in names]
-        return self.beta.extract(idx, list(range(self.k))), self.beta0.extract(idx, [0])
-
     def row_lists(self, names) -> tuple[list[tuple[sp.Expr, ...]], list[tuple[sp.Expr]]]:
-        """``rows(names)`` as sequences of rows, for the list arithmetic of :func:`product_rows`."""
+        """The rows of β and β₀ for ``names``, for the list arithmetic of :func:`product_rows`."""
         idx = [self.names.index(n) for n in names]
         return [self._beta_rows[i] for i in idx], [(self._beta0_column[i],) for i in idx]
 
@@ -411,8 +407,8 @@ def rotation_motion(rotation, system: System, rates: Rates, gamma=None, differen
 def point_partials(position, system: System, rates: Rates) -> sp.Matrix:
     """The partial velocities J β of a point (the α_rs of eq. 14.6)."""
     coords = [c.name for c in system.coordinates]
-    J = jacobian(sp.Matrix(position), [S.value(c) for c in coords])
-    return product(J, rates.rows(coords)[0])
+    J = jacobian_rows(position, [S.value(c) for c in coords])
+    return sp.Matrix(product_rows(J, rates.row_lists(coords)[0], rates.k))
 
 
 def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:

@@ -691,20 +691,27 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     )
 
 
-def _kkt(v: dict, N: int, m: int, force_svd: bool = False) -> tuple[list, list[int]]:
-    """Solve [mass −Aᵀ; A 0] [r̈; λ] = [loads − inertial; −rest]; r̈ then λ."""
-    K = mpmath.matrix(N + m, N + m)
-    b = mpmath.matrix(N + m, 1)
+def _kkt_entries(mass, A, loads, inertial, rest, N: int, m: int, zero) -> tuple[list[list], list]:
+    """[mass −Aᵀ; A 0] and [loads − inertial; −rest] as rows and a column, of SymPy or mpmath entries."""
+    K = [[zero] * (N + m) for _ in range(N + m)]
+    b = [zero] * (N + m)
     for i in range(N):
         for j in range(N):
-            K[i, j] = v["mass"][i, j]
+            K[i][j] = mass[i, j]
         for r in range(m):
-            K[i, N + r] = -v["A"][r, i]
-        b[i] = v["loads"][i, 0] - v["inertial"][i, 0]
+            K[i][N + r] = -A[r, i]
+        b[i] = loads[i, 0] - inertial[i, 0]
     for r in range(m):
         for j in range(N):
-            K[N + r, j] = v["A"][r, j]
-        b[N + r] = -v["rest"][r, 0]
+            K[N + r][j] = A[r, j]
+        b[N + r] = -rest[r, 0]
+    return K, b
+
+
+def _kkt(v: dict, N: int, m: int, force_svd: bool = False) -> tuple[list, list[int]]:
+    """Solve [mass −Aᵀ; A 0] [r̈; λ] = [loads − inertial; −rest]; r̈ then λ."""
+    rows, column = _kkt_entries(v["mass"], v["A"], v["loads"], v["inertial"], v["rest"], N, m, mpmath.mpf(0))
+    K, b = mpmath.matrix(rows), mpmath.matrix(column)
     if not force_svd:
         try:
             x = mpmath.lu_solve(K, b)
@@ -848,18 +855,8 @@ def reaction_system(derivation) -> ReactionSystem:
     N = len(names)
     rates = derivation.rates
     velocities = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    K = [[sp.S.Zero] * (N + m) for _ in range(N + m)]
-    b: list[sp.Expr] = [sp.S.Zero] * (N + m)
-    for i in range(N):
-        for j in range(N):
-            K[i][j] = fundamental.mass[i, j]
-        for r in range(m):
-            K[i][N + r] = -fundamental.A[r, i]
-        b[i] = fundamental.loads[i, 0] - fundamental.inertial[i, 0]
-    for r in range(m):
-        for j in range(N):
-            K[N + r][j] = fundamental.A[r, j]
-        b[N + r] = -fundamental.relation_rest[r, 0]
+    K, b = _kkt_entries(fundamental.mass, fundamental.A, fundamental.loads, fundamental.inertial,
+                        fundamental.relation_rest, N, m, sp.S.Zero)
     flat = [e for row in K for e in row] + b
     # substitute walks the expressions as graphs: the dependent rates are large DAGs.
     flat = substitute(flat, velocities) if velocities else flat
