@@ -28,6 +28,7 @@ from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
 from gacli.kinematics import BodyMotion, Rates, body_motions, product, solve_rates
+from gacli.trig import reduce as pythagorean
 from gacli.model import System
 
 
@@ -183,10 +184,10 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
                              split=False)
     M = [[sp.S.Zero] * k for _ in range(k)]  # lists: setting matrix entries one by one is slow
     for (i, j), groups in mass_terms.items():
-        M[i][j] = _pythagorean(_sum_grouped(groups))
+        M[i][j] = pythagorean(_sum_grouped(groups))
         if symmetric:
             M[j][i] = M[i][j]
-    F = [sp.Add(Q[s], _sum_grouped(groups, -1)) for s, groups in enumerate(rest_terms)]
+    F = [pythagorean(sp.Add(Q[s], _sum_grouped(groups, -1))) for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 
@@ -282,34 +283,3 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
         total = sp.Add(*factors)
         out.append(canonical_product(coefficient, rest if total is sp.S.One else [total, *rest]))
     return sp.Add(*out)
-
-
-def _pythagorean(expr: sp.Expr) -> sp.Expr:
-    """c·sin(x)² + c·cos(x)² → c among the terms of a sum, in one pass per round.
-
-    The squared partial velocities of a rotating point (the diagonal of M,
-    eq. 14.19) give these pairs; SymPy's trigsimp would find them too, at a
-    far higher cost.
-    """
-    while expr.is_Add:
-        terms = list(expr.args)
-        halves: dict[tuple[sp.Expr, sp.Expr], dict[type, int]] = {}
-        pairs: list[tuple[int, int, sp.Expr]] = []
-        used: set[int] = set()
-        for index, term in enumerate(terms):
-            factors = sp.Mul.make_args(term)
-            for f in factors:
-                if f.is_Pow and f.exp == 2 and isinstance(f.base, (sp.sin, sp.cos)):
-                    rest = sp.Mul(*[g for g in factors if g is not f])
-                    seen = halves.setdefault((rest, f.base.args[0]), {})
-                    other = seen.get(sp.cos if isinstance(f.base, sp.sin) else sp.sin)
-                    if other is not None and other not in used and index not in used:
-                        used.update((other, index))
-                        pairs.append((other, index, rest))
-                    else:
-                        seen.setdefault(type(f.base), index)
-        if not pairs:
-            break
-        kept = [t for index, t in enumerate(terms) if index not in used]
-        expr = sp.Add(*kept, *[rest for _, _, rest in pairs])
-    return expr

@@ -14,6 +14,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.kinematics import BodyMotion, Rates, configuration_chain
 from gacli.model import System
+from gacli.trig import reduce as pythagorean
 
 
 def acceleration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr]:
@@ -32,7 +33,8 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
     chain = acceleration_chain(system, rates)
     G = sp.S.Zero
     for motion in motions:
-        G += _body_gibbs(motion, rates, chain)
+        # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
+        G += pythagorean(_body_gibbs(motion, rates, chain))
     if whole:
         return G
     return G - G.xreplace({a: 0 for a in rates.speed_rates})

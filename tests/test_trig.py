@@ -1,0 +1,87 @@
+"""sin² + cos² = 1 applied angle by angle (gacli.trig): the value never changes, the size does."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from gacli import trig
+
+a, b, m, r, u = sp.symbols("a b m r u")
+ANGLES = (a, b)
+FACTORS = (sp.sin(a), sp.cos(a), sp.sin(b), sp.cos(b), m, r, u, sp.Integer(2), m + r)
+
+
+def _products(draw_indices) -> sp.Expr:
+    return sp.Mul(*[FACTORS[i] for i in draw_indices])
+
+
+expressions = st.lists(st.lists(st.integers(0, len(FACTORS) - 1), min_size=1, max_size=5),
+                       min_size=1, max_size=8).map(lambda terms: sp.Add(*[_products(t) for t in terms]))
+
+
+def _values(expr: sp.Expr, seed: int) -> list[complex]:
+    rng = random.Random(seed)
+    out = []
+    for _ in range(3):
+        point = {s: sp.Float(rng.uniform(-2, 2)) for s in (a, b, m, r, u)}
+        out.append(complex(expr.xreplace(point).evalf(30)))
+    return out
+
+
+@settings(max_examples=60, deadline=None)
+@given(expressions, st.integers(0, 10_000))
+def test_the_value_is_unchanged(expr, seed):
+    reduced = trig.reduce(expr)
+    for x, y in zip(_values(expr, seed), _values(reduced, seed)):
+        assert abs(x - y) <= 1e-20 + 1e-12 * abs(x)
+
+
+@settings(max_examples=60, deadline=None)
+@given(expressions)
+def test_no_square_pair_is_left(expr):
+    """After the reduction, no angle has both sin² and cos² (one of them was replaced)."""
+    reduced = sp.expand(trig.reduce(expr))
+    for angle in ANGLES:
+        powers = {type(p.base) for p in reduced.atoms(sp.Pow) if p.exp >= 2 and isinstance(p.base, (sp.sin, sp.cos))
+                  and p.base.args[0] == angle}
+        assert len(powers) < 2, reduced
+
+
+def test_an_expression_free_of_an_angle_loses_it():
+    # (s² + c²)² X + s² c² Y − s² c² Y: a spin angle that cancels only through the identity.
+    s, c = sp.sin(a), sp.cos(a)
+    expr = sp.expand((s ** 2 + c ** 2) ** 2 * m * u ** 2) + s ** 2 * c ** 2 * r - c ** 2 * s ** 2 * r
+    assert trig.reduce(expr) == m * u ** 2
+
+
+def test_the_rolling_disk_pair_collapses():
+    s, c = sp.sin(b), sp.cos(b)
+    expr = 4 * u ** 2 * m * r ** 2 * sp.sin(a) ** 5 * (s ** 4 + 2 * s ** 2 * c ** 2 + c ** 4)
+    assert trig.reduce(sp.expand(expr)) == 4 * u ** 2 * m * r ** 2 * sp.sin(a) ** 5
+
+
+def test_sums_of_parameters_are_not_multiplied_out():
+    expr = (m + r) * sp.sin(a) ** 2 * u + (m + r) * sp.cos(a) ** 2 * u
+    assert trig.reduce(expr) == (m + r) * u
+
+
+def test_a_large_expansion_is_left_alone():
+    expr = (sp.sin(a) + sp.cos(a) + sp.sin(b) + m + r) ** 40
+    assert trig.reduce(expr) is expr
+
+
+@pytest.mark.parametrize("expr, limit, expected", [
+    ((a + b) ** 2, 100, 3), ((a + b + m) * (a + r), 100, 6), (a * b, 10, 1),
+    ((a + b + m + r + u) ** 40, 1_000, None),
+])
+def test_expanded_terms_counts_without_expanding(expr, limit, expected):
+    count = trig.expanded_terms(expr, limit)
+    if expected is None:
+        assert count > limit
+    else:
+        assert count == len(sp.Add.make_args(sp.expand(expr)))
