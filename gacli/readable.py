@@ -1,7 +1,16 @@
-"""Simplification for reading, within a budget of operations per step.
+"""The one simplifier for reading, within a budget of operations per step.
 
-Everything printed for people goes through :class:`Tidy`; generated code
-never does, so display choices cannot change what a simulator computes.
+Everything printed for people (text, LaTeX, ``--steps``) goes through
+:class:`Tidy`; generated code never does, so display choices cannot change
+what a simulator computes.
+
+It does what a careful person does by hand, and nothing that can grow an
+expression: sin² + cos² = 1 angle by angle (:mod:`gacli.trig`, bounded by
+the number of terms it would distribute), common factors taken out of sums
+(``factor_terms``, which never expands), and, for a quotient that is small,
+cancellation of common factors. SymPy's ``simplify`` is not used: its time
+is unbounded in the size of what it tries, and it rewrites ``abs`` and
+``sign`` into ``Piecewise`` that a reader did not write.
 """
 
 from __future__ import annotations
@@ -9,11 +18,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.printing.str import StrPrinter
 
+from gacli import trig
 from gacli.graph import LARGE_TREE, is_large, is_small
 
-# sympy.simplify grows quickly with size; above this many operations only
-# cheap rational cancellation is tried.
+# A quotient is cancelled (which expands numerator and denominator) only up
+# to this many operations.
 SIMPLIFY_OPS = 250
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
@@ -41,13 +52,11 @@ class Tidy:
         if self.spent + ops > self.budget:
             return expr
         self.spent += ops
-        if ops <= SIMPLIFY_OPS:
-            return sp.simplify(expr)
-        return sp.cancel(expr)
+        return readable(expr)
 
     def collected(self, expr: sp.Expr, accelerations) -> sp.Expr:
         """Collected on the accelerations, each coefficient tidied."""
-        expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) else expr
+        expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) and _expands_small(expr) else expr
         parts = sp.collect(expanded, list(accelerations), evaluate=False)
         total = sp.S.Zero
         for key in sorted(parts, key=sp.default_sort_key):
@@ -55,11 +64,41 @@ class Tidy:
         return total
 
 
+def readable(expr: sp.Expr) -> sp.Expr:
+    """sin² + cos² = 1, common factors out, a small quotient cancelled; never larger work than that."""
+    expr = trig.reduce(expr)
+    if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and _expands_small(expr):
+        cancelled = sp.cancel(expr)
+        if sp.count_ops(cancelled) < sp.count_ops(expr):
+            expr = cancelled
+    return sp.factor_terms(expr)
+
+
+def _is_quotient(expr: sp.Expr) -> bool:
+    """Whether some term has a symbolic denominator (where cancel can help)."""
+    return any(not sp.fraction(term)[1].is_Number for term in sp.Add.make_args(expr))
+
+
+def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
+    """Whether multiplying ``expr`` out stays under ``limit`` terms (counted without expanding)."""
+    return trig.expanded_terms(expr, limit) <= limit
+
+
 def displayable(d) -> bool:
     """Whether the derivation's M and F are small enough to print as formulas."""
     return not any(is_large(e) for e in (*d.mass_matrix, *d.forcing))
 
 
+class _FilePrinter(StrPrinter):
+    """SymPy's str printer with the functions named as the file's grammar names them."""
+
+    def _print_Abs(self, expr) -> str:
+        return f"abs({self._print(expr.args[0])})"
+
+
+_PRINTER = _FilePrinter({"order": "lex"})
+
+
 def show(expr) -> str:
-    """An expression in the system file's grammar (``dot(x)``, ``**``)."""
-    return sp.sstr(expr, order="lex")
+    """An expression in the system file's grammar (``dot(x)``, ``**``, ``abs``)."""
+    return _PRINTER.doprint(expr)
