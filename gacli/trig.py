@@ -27,6 +27,8 @@ from gacli.graph import is_small
 # it stays well below a second, and the equations it is meant for (a few
 # bodies through a frame tree) need a few hundred.
 MAX_TERMS = 4_000
+# A coefficient is multiplied out to see whether it cancels only below this many terms.
+COEFFICIENT_TERMS = 400
 # Nodes of an expression tree past which it is not even looked at.
 MAX_NODES = 20_000
 
@@ -161,10 +163,22 @@ def _summed(poly: Poly) -> Poly:
     """Each coefficient summed once; vanishing ones dropped."""
     out: Poly = {}
     for monomial, terms in poly.items():
-        total = sp.Add(*terms)
+        total = _coefficient(sp.Add(*terms))
         if total != 0:
             out[monomial] = [total]
     return out
+
+
+def _coefficient(total: sp.Expr) -> sp.Expr:
+    """A coefficient multiplied out where that is shorter: sums of rates that cancel only so.
+
+    Parameters' sums such as (m₁ + m₂) stay whole where multiplying them out
+    would lengthen the coefficient.
+    """
+    if not total.is_Add or expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
+        return total
+    expanded = sp.expand(total)
+    return expanded if sp.count_ops(expanded) < sp.count_ops(total) else total
 
 
 def _size(poly: Poly) -> tuple[int, int]:
