@@ -23,6 +23,7 @@ from gacli.errors import Diagnostic, SystemFileError
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.model import Body, Form, System
+from gacli.trig import reduce as pythagorean
 
 # Ranks are decided at a random configuration: a generic rank of a matrix of
 # functions equals its rank at almost every point. Fixed seed: same answer
@@ -257,13 +258,14 @@ def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
         return A.LUsolve(B)
     minor = _minors(A)
     everything = tuple(range(A.rows))
-    det = minor(everything, everything)
+    # Reduced by sin² + cos² = 1: a sleigh's determinant is sin(θ)² + cos(θ)², which is 1.
+    det = pythagorean(minor(everything, everything))
 
     def entry(i: int, c: int) -> sp.Expr:
         # (adj A)_ij = (-1)^(i+j) det(A without row j and column i)
         terms = [(-1) ** (i + j) * minor(_without(everything, j), _without(everything, i)) * B[j, c]
                  for j in range(A.rows) if B[j, c] != 0]
-        return sp.Add(*terms) / det
+        return pythagorean(sp.Add(*terms)) / det
 
     return sp.Matrix(A.rows, B.cols, entry)
 

@@ -94,6 +94,9 @@ def _distribute(expr: sp.Expr) -> Poly:
             return out
     if _is_trig(expr):
         return {((expr, 1),): [sp.S.One]}
+    if expr.args and not expr.is_Atom:
+        # Not a polynomial in the sines and cosines (a quotient, a root): reduce inside it.
+        expr = expr.func(*[reduce(a) if isinstance(a, sp.Expr) else a for a in expr.args])
     return {(): [expr]}
 
 
