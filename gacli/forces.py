@@ -17,6 +17,7 @@ from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
 from gacli.kinematics import BodyMotion, Rates, point_partials, product_rows
 from gacli.model import System
+from gacli.trig import reduce as pythagorean
 
 
 def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, ...]) -> sp.ImmutableMatrix:
@@ -30,7 +31,9 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
             terms[s].append(Q_s)
     Q = [sp.Add(*t) for t in terms]
     substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    return sp.ImmutableMatrix(rates.k, 1, substitute(Q, substitution) if substitution else Q)
+    Q = substitute(Q, substitution) if substitution else Q
+    # A torque carried through a chain of frames gives T·sin² + T·cos² − T.
+    return sp.ImmutableMatrix(rates.k, 1, [pythagorean(e) for e in Q])
 
 
 def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:

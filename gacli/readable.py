@@ -26,6 +26,9 @@ from gacli.graph import LARGE_TREE, is_large, is_small
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.
 SIMPLIFY_OPS = 250
+# Common factors are taken out of sums (a walk that never expands) up to this
+# many nodes.
+FACTOR_NODES = 5_000
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
@@ -46,11 +49,14 @@ class Tidy:
     spent: int = 0
 
     def __call__(self, expr: sp.Expr) -> sp.Expr:
-        if not is_small(expr, 8 * SIMPLIFY_OPS):
+        # The identity first, whatever the size: it bounds its own work, and a
+        # large expression is where sin² + cos² costs the reader most.
+        expr = trig.reduce(expr)
+        if not is_small(expr, FACTOR_NODES):
             return expr
         ops = sp.count_ops(expr)
         if self.spent + ops > self.budget:
-            return expr
+            return sp.factor_terms(expr)
         self.spent += ops
         return readable(expr)
 
@@ -66,7 +72,7 @@ class Tidy:
 
 def readable(expr: sp.Expr) -> sp.Expr:
     """sin² + cos² = 1, common factors out, a small quotient cancelled; never larger work than that."""
-    expr = trig.reduce(expr)
+    expr = trig.reduce(expr)  # a second time costs little: nothing is left to distribute
     if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and _expands_small(expr):
         cancelled = sp.cancel(expr)
         if sp.count_ops(cancelled) < sp.count_ops(expr):
