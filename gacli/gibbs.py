@@ -43,12 +43,12 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
 def _body_gibbs(motion: BodyMotion, rates: Rates, chain) -> sp.Expr:
     u = sp.Matrix(rates.speeds)
     v = motion.linear.partials * u + motion.linear.velocity0
-    a = v.applyfunc(lambda e: S.time_derivative(e, chain))
+    a = v.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:
         I = motion.body.inertia
         w = motion.angular.partials * u + motion.angular.velocity0
-        alpha = w.applyfunc(lambda e: S.time_derivative(e, chain))
+        alpha = w.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
         G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
     return G
 

@@ -25,7 +25,7 @@ from gacli.graph import LARGE_TREE, is_large, is_small
 
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.
-SIMPLIFY_OPS = 250
+SIMPLIFY_OPS = 600
 # Common factors are taken out of sums (a walk that never expands) up to this
 # many nodes.
 FACTOR_NODES = 5_000
@@ -74,7 +74,7 @@ def readable(expr: sp.Expr) -> sp.Expr:
     """sin² + cos² = 1, common factors out, a small quotient cancelled; never larger work than that."""
     expr = trig.reduce(expr)  # a second time costs little: nothing is left to distribute
     if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and _expands_small(expr):
-        cancelled = sp.cancel(expr)
+        cancelled = trig.reduce(sp.cancel(expr))  # cancel multiplies out, and may rebuild sin² + cos²
         if sp.count_ops(cancelled) < sp.count_ops(expr):
             expr = cancelled
     return sp.factor_terms(expr)

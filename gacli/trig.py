@@ -162,11 +162,13 @@ def _eliminate(poly: Poly, angle: sp.Expr, kind: type) -> Poly:
     return _summed(out)
 
 
-def _summed(poly: Poly) -> Poly:
-    """Each coefficient summed once; vanishing ones dropped."""
+def _summed(poly: Poly, multiply_out: bool = False) -> Poly:
+    """Each coefficient summed once (and multiplied out where shorter); vanishing ones dropped."""
     out: Poly = {}
     for monomial, terms in poly.items():
-        total = _coefficient(sp.Add(*terms))
+        total = sp.Add(*terms)
+        if multiply_out:
+            total = _coefficient(total)
         if total != 0:
             out[monomial] = [total]
     return out
@@ -181,7 +183,7 @@ def _coefficient(total: sp.Expr) -> sp.Expr:
     if not total.is_Add or expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
         return total
     expanded = sp.expand(total)
-    return expanded if sp.count_ops(expanded) < sp.count_ops(total) else total
+    return expanded if len(sp.Add.make_args(expanded)) < len(total.args) else total
 
 
 def _size(poly: Poly) -> tuple[int, int]:
@@ -192,7 +194,7 @@ def _size(poly: Poly) -> tuple[int, int]:
 
 def _rebuild(poly: Poly) -> sp.Expr:
     terms = []
-    for monomial, coefficient in _summed(poly).items():
+    for monomial, coefficient in _summed(poly, multiply_out=True).items():
         trig = sp.Mul(*[b ** e for b, e in monomial])
         terms.append(coefficient[0] * trig)
     return sp.Add(*terms)
