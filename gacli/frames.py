@@ -18,6 +18,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.trig import reduce
+
 AXES = {"x": 0, "y": 1, "z": 2}
 _ZERO = sp.S.Zero
 _TRIGSIMP_OPS = 40
@@ -135,6 +137,32 @@ def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None) ->
         square = sp.trigsimp(square)
     length = sp.sqrt(square).replace(sp.Abs, lambda arg: arg)
     return centre - radius * along / length
+
+
+def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:
+    """Rolling rows (inertial components) re-expressed along the wheel: forward, sideways, up.
+
+    The rows in N carry the heading of the vehicle in every entry, and the
+    count ℓ keeps only some of them (two wheels on one axle repeat a row):
+    keeping N's x row of one wheel but not its y row makes the rates depend
+    on the heading through a quotient that no identity removes. Along the
+    wheel each row is a scalar that the heading cannot change, so the
+    solved rates are free of it, as by hand. The horizontal part of the axle
+    fixes the directions; it is normalised where its length is a single
+    factor (a leaned wheel: cos of the lean) and left unnormalised otherwise,
+    which only scales a row. A sphere (no axle) keeps N's rows.
+    """
+    if axle is None:
+        return rows
+    sideways = sp.Matrix([axle[0], axle[1], 0])
+    square = reduce(axle[0] ** 2 + axle[1] ** 2)
+    if square == 0:
+        return rows
+    if square.is_Pow and square.exp == 2:
+        sideways = sideways / square.base
+    forward = sp.Matrix([sideways[1], -sideways[0], 0])  # sideways × up
+    basis = sp.Matrix.hstack(forward, sideways, sp.Matrix([0, 0, 1])).T
+    return (basis * rows).applyfunc(reduce)
 
 
 def rolling_rows(centre_form: sp.Matrix, omega_form: sp.Matrix, offset: sp.Matrix,
