@@ -212,9 +212,11 @@ class _Parser:
 
 
 def check_math(tex: str, dialect: Dialect = OVERRIDE) -> TexProblem | None:
-    """None if ``tex`` is a math name in ``dialect``; otherwise the first problem."""
-    if len(tex) > dialect.max_length:
-        return TexProblem(f"it is longer than {dialect.max_length} characters", dialect.max_length)
+    """None if ``tex`` is a math name in ``dialect``; otherwise the first problem.
+
+    The grammar is checked before the length, so that a long hostile text is
+    reported for what it tries to do (the parser is linear, its depth bounded).
+    """
     if not tex.strip():
         return TexProblem("it is empty", 0)
     try:
@@ -224,6 +226,8 @@ def check_math(tex: str, dialect: Dialect = OVERRIDE) -> TexProblem | None:
             raise _Reject("this '}' closes nothing", parser.peek().offset)
     except _Reject as error:
         return error.problem
+    if len(tex) > dialect.max_length:
+        return TexProblem(f"it is longer than {dialect.max_length} characters", dialect.max_length)
     return None
 
 
