@@ -174,3 +174,14 @@ def test_tricky_names_compile(steps, tmp_path):
 def test_a_title_longer_than_the_input_buffer_compiles(tmp_path):
     (text,) = emit_latex(derive(loads(tricky(LONG_TITLE, LONG_TITLE))), standalone=True).values()
     _compile(text, tmp_path)
+
+
+def test_every_allowed_command_exists_in_the_generated_preamble(tmp_path):
+    """The grammar's allowlist is only safe to promise if article + amsmath define all of it."""
+    from gacli.texsafe import ACCENTS, SYMBOLS, check_math
+
+    names = [rf"\{name}" for name in sorted(SYMBOLS)] + [rf"\{name}{{x}}" for name in sorted(ACCENTS)]
+    assert all(check_math(tex) is None for tex in names)
+    preamble = emit_latex(derive(loads(tricky())), standalone=True)["tricky_names.tex"].split(r"\begin{document}")[0]
+    body = "\n".join(f"${tex}$" for tex in names + [r"\left\|{x}\right\| \left\langle{x}\right\rangle \aleph \wp"])
+    _compile(preamble + "\\begin{document}\n" + body + "\n\\end{document}\n", tmp_path)
