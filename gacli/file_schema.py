@@ -16,6 +16,8 @@ import json
 
 from gacli.expr.grammar import MAX_LENGTH
 from gacli.schema import FORMAT_VERSION
+from gacli.system_name import MAX_LENGTH as NAME_MAX_LENGTH
+from gacli.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
 
 SCHEMA_FILE = f"gacli-system-{FORMAT_VERSION}.schema.json"
 DIALECT = "https://json-schema.org/draft/2020-12/schema"
@@ -26,6 +28,8 @@ _CHARACTERS = r"\sA-Za-z0-9_.+\-*/(),"
 EXPRESSION_PATTERN = rf"^[{_CHARACTERS}]*[A-Za-z0-9_.)][{_CHARACTERS}]*$"
 CONSTRAINT_PATTERN = rf"^[{_CHARACTERS}]*(=[{_CHARACTERS}]*)?$"
 AXES = ["x", "y", "z", "X", "Y", "Z"]
+# The characters of a latex: override (gacli.texsafe checks the commands and braces).
+LATEX_PATTERN = r"^[A-Za-z0-9\\^_{}', ]*$"
 
 
 def _ref(name: str) -> dict:
@@ -65,8 +69,13 @@ def _symbol_section(entry: str, description: str) -> dict:
                    description=description)
 
 
+def _latex() -> dict:
+    return {"type": "string", "maxLength": LATEX_MAX_LENGTH, "pattern": LATEX_PATTERN,
+            "description": "math TeX: letters, digits, ^ _ { } ' , and commands such as \\alpha, \\dot, \\mathrm"}
+
+
 def _symbol_entry(with_value: bool) -> dict:
-    properties = {"description": _text(), "unit": _text(), "latex": _text()}
+    properties = {"description": _text(), "unit": _text(), "latex": _latex()}
     if with_value:
         properties["value"] = _ref("expression")
     return _either({"type": "null"}, {"type": ["string", "number"], "description": "a description"},
@@ -103,7 +112,7 @@ def _definitions() -> dict:
         "quasi_coordinate": _either(
             {"type": "null"}, _ref("expression"),
             _closed({"description": _text(), "differential": _ref("expression"), "unit": _text(),
-                     "latex": _text()}),
+                     "latex": _latex()}),
             description="its differential (a string), or a mapping; nothing: a primitive quasi-coordinate"),
         "frame": _frame(),
         "body": _body(),
@@ -158,7 +167,9 @@ def _load() -> dict:
 def _top_level() -> dict:
     return {
         "gacli": {"const": FORMAT_VERSION, "description": "the format version"},
-        "name": _ref("name"),
+        "name": {"allOf": [_ref("name"), {"maxLength": NAME_MAX_LENGTH}],
+                 "description": "the system's name: file names, the Python module, the C prefix; "
+                                "not a keyword, a C standard header or a Python module"},
         "title": _text(),
         "description": _text(),
         "source": {"type": "string", "description": "where the system comes from (a book, a paper)"},

@@ -15,6 +15,9 @@ from dataclasses import dataclass, field
 
 from gacli.errors import Diagnostic
 from gacli.source import Mapping, Node, Scalar, Sequence, SourceFile
+from gacli.system_name import name_problem
+from gacli.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
+from gacli.texsafe import check_math
 
 FORMAT_VERSION = 1
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
@@ -162,8 +165,8 @@ class _Reader:
     source: SourceFile
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
-    def error(self, node: Node, where: str, message: str, hint: str = "") -> None:
-        self.diagnostics.append(Diagnostic(self.source.location(node), message, where, hint))
+    def error(self, node: Node, where: str, message: str, hint: str = "", offset: int | None = None) -> None:
+        self.diagnostics.append(Diagnostic(self.source.location(node, offset), message, where, hint))
 
     def mapping(self, node: Node, where: str, allowed: tuple[str, ...]) -> dict[str, tuple[Scalar, Node]]:
         if not isinstance(node, Mapping):
@@ -301,7 +304,32 @@ def _check_version(reader: _Reader, top: dict) -> None:
 
 
 def _system_name(reader: _Reader, top: dict) -> str | None:
-    return reader.name(top["name"][1], "name") if "name" in top else None
+    """The name, if it can name files, a Python module and C identifiers (see gacli.system_name)."""
+    if "name" not in top or not reader.name(top["name"][1], "name"):
+        return None
+    node = top["name"][1]
+    problem = name_problem(node.text)
+    if problem:
+        reader.error(node, "name", problem, "the name becomes <name>.py, <name>.c, <name>.h and C identifiers")
+        return None
+    return node.text
+
+
+def _latex(reader: _Reader, node: Node | None, where: str) -> str:
+    """A ``latex:`` override, only if it is a math name TeX cannot run (see gacli.texsafe)."""
+    if node is None:
+        return ""
+    text = reader.text(node, where)
+    if not text or not isinstance(node, Scalar):
+        return ""
+    problem = check_math(text)
+    if problem is None:
+        return text
+    reader.error(node, where, f"bad LaTeX override: {problem.message}",
+                 f"a name in math TeX of at most {LATEX_MAX_LENGTH} characters: letters, digits, "
+                 "^ _ { } ' , and commands such as \\alpha, \\dot, \\hat, \\mathrm",
+                 offset=problem.offset)
+    return ""
 
 
 def _optional_text(reader: _Reader, top: dict, key: str) -> str:
@@ -355,7 +383,7 @@ def _symbol_entry(reader: _Reader, kind: str, key: Scalar, value: Node, where: s
         description=reader.text(get("description"), f"{where}.description") if get("description") else "",
         value=reader.expression(get("value"), f"{where}.value") if get("value") else None,
         unit=reader.text(get("unit"), f"{where}.unit") if get("unit") else "",
-        latex=reader.text(get("latex"), f"{where}.latex") if get("latex") else "",
+        latex=_latex(reader, get("latex"), f"{where}.latex"),
         differential=reader.expression(get("differential"), f"{where}.differential") if get("differential") else None,
     )
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import re
+import textwrap
 import unicodedata
 from collections.abc import Mapping
 from typing import NamedTuple
@@ -27,12 +28,15 @@ from gacli.gibbs import gibbs_coefficients
 from gacli.graph import is_small
 from gacli.model import System
 from gacli.readable import TOO_LARGE, displayable
+from gacli.texsafe import is_printable_name
 
 # `sympy.simplify` runs only below this many operations (it is slow and
 # superlinear); bigger expressions are first reduced with cancel/factor_terms.
 SIMPLIFY_OPS = 120
 # Rough printed width (in characters of typeset maths) before a sum is broken.
 LINE_WIDTH = 44
+# Characters of free text (a title, a source) on one line of the .tex file.
+TEXT_LINE = 240
 
 _RATE = re.compile(r"^(dot|ddot|d(\d+))\((.+)\)$")
 _DIFFERENTIAL = re.compile(r"^d\[(.+)\]$")
@@ -53,6 +57,13 @@ def latex_names(system: System) -> dict[str, str]:
     """Name → LaTeX for every declared name with a ``latex:`` override."""
     groups = (system.parameters, system.functions, system.inputs, system.coordinates, system.quasi_coordinates)
     return {item.name: item.latex for group in groups for item in group if item.latex}
+
+
+def upright_name(name: str) -> str:
+    """A name as upright text, for names SymPy would print as something the document cannot set:
+    ``beth`` (\\beth needs amssymb), ``xscr`` (\\mathscr), ``_K`` (a bare subscript), ``__x``
+    (a double subscript)."""
+    return r"\mathrm{%s}" % name.replace("_", r"\_")
 
 
 class GacliLatexPrinter(LatexPrinter):
@@ -90,6 +101,8 @@ class GacliLatexPrinter(LatexPrinter):
         else:
             head, supers, subs = self._split_super_sub(base)
             tail = ("^{%s}" % " ".join(supers) if supers else "") + ("_{%s}" % " ".join(subs) if subs else "")
+            if base.startswith("_") or base.endswith("_") or not is_printable_name(head + tail):
+                head, tail = upright_name(base), ""
         if order == 0:
             return head + tail
         if order in _DOTS:
@@ -147,16 +160,24 @@ def _header(system: System) -> list[str]:
         f"% SHA-256: {system.sha256}",
     ]
     if system.title:
-        lines.append(f"% Title: {_one_line(system.title)}")
+        lines += _comment("Title", system.title)
     if system.reference:
-        lines.append(f"% Source: {_one_line(system.reference)}")
+        lines += _comment("Source", system.reference)
     return lines + ["% Requires the amsmath package."]
+
+
+def _comment(label: str, text: str) -> list[str]:
+    """``% label: text`` in lines of about TEXT_LINE characters (as _wrap, for the same reason)."""
+    chunks = textwrap.wrap(_one_line(text), TEXT_LINE, break_long_words=True, break_on_hyphens=False)
+    return [f"% {label}: {chunks[0]}"] + [f"%   {chunk}" for chunk in chunks[1:]] if chunks else []
 
 
 def _fragment(sections) -> list[str]:
     lines: list[str] = []
     for section in sections:
-        lines += ["", f"% {section.title}" + (f". {section.note}" if section.note else "")]
+        comment = section.title + (f". {section.note}" if section.note else "")
+        # Free text comes in lines (see _wrap): each must stay a comment.
+        lines += [""] + [f"% {line}" for line in comment.split("\n")]
         lines += [r"\noindent " + section.note] if section.shown else []
         lines += _align(section) if section.groups else []
     return lines
@@ -444,16 +465,42 @@ def _one_line(text: str) -> str:
 
 
 def _text(text: str) -> str:
-    """Free text from the system file as LaTeX text that pdflatex accepts (ASCII out)."""
-    out: list[str] = []
+    """Free text from the system file as LaTeX text that pdflatex accepts (ASCII out), in lines."""
+    units: list[str] = []  # the LaTeX of each character: lines break between them, never inside
     for c in unicodedata.normalize("NFC", _one_line(text)):
-        if c in _ACCENTS and out:
+        if c in _ACCENTS and units:
             # A combining mark left over after NFC (u̇ has no precomposed form): accent the last letter.
-            out[-1] = rf"\{_ACCENTS[c]}{{{out[-1]}}}"
+            units[-1] = rf"\{_ACCENTS[c]}{{{units[-1]}}}"
         else:
-            out.append(_text_char(c))
+            units.append(_text_char(c))
     # TeX sets -- and --- as dashes; an option such as --format must keep its two hyphens.
-    return re.sub(r"-(?=-)", "-{}", "".join(out))
+    units = [re.sub(r"-(?=-)", "-{}", u) for u in units]
+    for i in range(len(units) - 1):
+        if units[i].endswith("-") and units[i + 1].startswith("-"):
+            units[i] += "{}"
+    return _wrap(units)
+
+
+def _wrap(units: list[str]) -> str:
+    """Lines of about TEXT_LINE characters: pdflatex cannot read a line longer than its buffer.
+
+    A line ends at the first space past TEXT_LINE; a run without spaces is cut
+    at 2 * TEXT_LINE, the cut hidden from TeX by a ``%`` (every unit ends in a
+    character that cannot continue a control word).
+    """
+    lines, line, size = [], [], 0
+    for unit in units:
+        if unit == " " and size >= TEXT_LINE:
+            lines.append("".join(line))
+            line, size = [], 0
+            continue
+        if size >= 2 * TEXT_LINE:
+            lines.append("".join(line) + "%")
+            line, size = [], 0
+        line.append(unit)
+        size += len(unit)
+    lines.append("".join(line))
+    return "\n".join(lines)
 
 
 def _text_char(c: str) -> str:
