@@ -28,7 +28,7 @@ from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
 from gacli.kinematics import BodyMotion, Rates, body_motions, product, solve_rates
-from gacli.trig import reduce as pythagorean
+from gacli import trig
 from gacli.model import System
 
 
@@ -184,10 +184,10 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
                              split=False)
     M = [[sp.S.Zero] * k for _ in range(k)]  # lists: setting matrix entries one by one is slow
     for (i, j), groups in mass_terms.items():
-        M[i][j] = pythagorean(_sum_grouped(groups))
+        M[i][j] = _reduced(_sum_grouped(groups), groups)
         if symmetric:
             M[j][i] = M[i][j]
-    F = [pythagorean(sp.Add(Q[s], _sum_grouped(groups, -1))) for s, groups in enumerate(rest_terms)]
+    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups, Q[s]) for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 
@@ -283,3 +283,23 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
         total = sp.Add(*factors)
         out.append(canonical_product(coefficient, rest if total is sp.S.One else [total, *rest]))
     return sp.Add(*out)
+
+
+def _reduced(entry: sp.Expr, groups: dict, other: sp.Expr = sp.S.Zero) -> sp.Expr:
+    """``entry`` reduced by sin² + cos² = 1 where its monomials hold a square (see :mod:`gacli.trig`).
+
+    The monomials are at hand as dicts of exponents: reading them costs far
+    less than the reduction's own walk of the entry, and a chain of
+    pendulums has no square in most entries.
+    """
+    for key, (powers, _) in groups.items():
+        if powers is None or any(_may_square(base, exp) for base, exp in powers.items()):
+            return trig.reduce(entry)
+    return trig.reduce(entry) if other.has(sp.sin, sp.cos) else entry
+
+
+def _may_square(base: sp.Expr, exp: sp.Expr) -> bool:
+    if isinstance(base, (sp.sin, sp.cos)):
+        return not exp.is_Integer or exp >= 2 or exp < 0
+    return not (base.is_Symbol or base.is_Number)
+

@@ -21,7 +21,7 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from gacli.graph import is_small
+from gacli.graph import postorder
 
 # Terms of the distributed polynomial past which the reduction is not tried:
 # it stays well below a second, and the equations it is meant for (a few
@@ -29,10 +29,10 @@ from gacli.graph import is_small
 MAX_TERMS = 4_000
 # A coefficient is multiplied out to see whether it cancels only below this many terms.
 COEFFICIENT_TERMS = 400
-# Nodes of an expression tree past which it is not even looked at.
+# Distinct subexpressions past which an expression is not even looked at.
 MAX_NODES = 20_000
 
-Monomial = tuple[tuple[sp.Expr, int], ...]  # (sin(θ) or cos(θ), exponent), sorted
+Monomial = frozenset  # of (sin(θ) or cos(θ), exponent) pairs
 Poly = dict[Monomial, list[sp.Expr]]  # monomial → the coefficient as a list of terms
 
 
@@ -42,14 +42,16 @@ class _TooLarge(Exception):
 
 def reduce(expr: sp.Expr) -> sp.Expr:
     """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap."""
-    # Size first: ``has`` walks a large expression as a tree, millions of nodes for the bicycle.
-    if not isinstance(expr, sp.Expr) or not is_small(expr, MAX_NODES) or not expr.has(sp.sin, sp.cos):
+    if not isinstance(expr, sp.Expr) or not _may_square(expr):
         return expr
     try:
         poly = _distribute(expr)
     except _TooLarge:
         return expr
-    for angle in _angles(poly):
+    angles = _angles(poly)
+    if not angles:
+        return expr
+    for angle in angles:
         poly = min((_eliminate(poly, angle, sp.cos), _eliminate(poly, angle, sp.sin)), key=_size)
     return _rebuild(poly)
 
@@ -59,6 +61,35 @@ def reduce_all(exprs: Iterable[sp.Expr]) -> list[sp.Expr]:
 
 
 # -- to a polynomial in the sines and cosines ---------------------------------
+
+def _may_square(expr: sp.Expr) -> bool:
+    """Whether multiplying out could give a square of a sine or cosine (else there is nothing to reduce).
+
+    One walk over the distinct subexpressions: a power of a sine or cosine, a
+    power of a sum that holds one, or a product of two factors that hold the
+    same sine (or the same cosine); sin θ · cos θ is no square. A chain of
+    pendulums has none in most entries, and skipping them keeps the
+    reduction nearly free there.
+    """
+    held: dict[sp.Basic, frozenset] = {}
+    for count, node in enumerate(postorder([expr])):
+        if count > MAX_NODES:
+            return False  # too large to distribute anyway
+        if isinstance(node, (sp.sin, sp.cos)):
+            held[node] = frozenset((node,))
+            continue
+        inside = [held.get(a, frozenset()) for a in node.args]
+        if node.is_Pow and inside[0] and node.exp.is_Integer and node.exp >= 2:
+            return True
+        if node.is_Mul:
+            seen: set = set()
+            for part in inside:
+                if seen & part:
+                    return True
+                seen |= part
+        held[node] = frozenset().union(*inside) if inside else frozenset()
+    return False
+
 
 def _is_trig(expr: sp.Expr) -> bool:
     return isinstance(expr, (sp.sin, sp.cos))
@@ -71,7 +102,7 @@ def _distribute(expr: sp.Expr) -> Poly:
             _merge(out, _distribute(term))
         return _bounded(out)
     if expr.is_Mul:
-        out = {(): [sp.S.One]}
+        out = {frozenset(): [sp.S.One]}
         plain = []
         for factor in expr.args:
             if factor.has(sp.sin, sp.cos):
@@ -85,19 +116,19 @@ def _distribute(expr: sp.Expr) -> Poly:
     if expr.is_Pow and expr.exp.is_Integer:
         n = int(expr.exp)
         if _is_trig(expr.base):
-            return {((expr.base, n),): [sp.S.One]}
+            return {frozenset(((expr.base, n),)): [sp.S.One]}
         if n > 0 and expr.base.is_Add:
-            out = {(): [sp.S.One]}
+            out = {frozenset(): [sp.S.One]}
             base = _distribute(expr.base)
             for _ in range(n):
                 out = _times(out, base)
             return out
     if _is_trig(expr):
-        return {((expr, 1),): [sp.S.One]}
+        return {frozenset(((expr, 1),)): [sp.S.One]}
     if expr.args and not expr.is_Atom:
         # Not a polynomial in the sines and cosines (a quotient, a root): reduce inside it.
         expr = expr.func(*[reduce(a) if isinstance(a, sp.Expr) else a for a in expr.args])
-    return {(): [expr]}
+    return {frozenset(): [expr]}
 
 
 def _merge(into: Poly, other: Poly) -> None:
@@ -128,18 +159,14 @@ def _multiply(a: Monomial, b: Monomial) -> Monomial:
 
 
 def _monomial(powers: dict[sp.Expr, int]) -> Monomial:
-    return tuple(sorted(((b, e) for b, e in powers.items() if e != 0), key=lambda p: sp.default_sort_key(p[0])))
+    return frozenset((b, e) for b, e in powers.items() if e != 0)
 
 
 # -- the reduction --------------------------------------------------------------
 
 def _angles(poly: Poly) -> list[sp.Expr]:
-    """The angles whose sine and cosine both appear, or either squared."""
-    seen: dict[sp.Expr, set] = {}
-    for monomial in poly:
-        for base, exp in monomial:
-            seen.setdefault(base.args[0], set()).add((type(base), exp >= 2))
-    found = [a for a, kinds in seen.items() if len({k for k, _ in kinds}) == 2 or any(sq for _, sq in kinds)]
+    """The angles whose sine or cosine appears squared or higher: the only places the identity acts."""
+    found = {base.args[0] for monomial in poly for base, exp in monomial if exp >= 2}
     return sorted(found, key=sp.default_sort_key)
 
 
