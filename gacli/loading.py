@@ -21,6 +21,7 @@ from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
+from gacli.rolling_geometry import axle_problem, radius_problem
 from gacli.model import (
     Body,
     Constraint,
@@ -503,6 +504,9 @@ class _Builder:
         radius = self.expression(decl.radius, f"{where}.radius", self.scopes.constant)
         frame = self._rolling_frame(decl, body, where) if body is not None else None
         surface = self._surface(decl, where)
+        if radius is not None and (problem := radius_problem(radius)):
+            self.error(decl.radius, f"{where}.radius", problem)
+            return []
         if body is None or radius is None or frame is None or surface is None:
             return []
         dcm = sp.Matrix(frame.dcm)
@@ -513,6 +517,9 @@ class _Builder:
                 self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
                 return []
             local = sp.Matrix(local)
+            if problem := axle_problem(local, dcm):  # else the contact divides by zero: rows lost
+                self.error(decl.axle.node, f"{where}.axle", problem)
+                return []
             axle = dcm * (local / sp.sqrt(local.dot(local)))
         centre = sp.Matrix(body.position)
         contact = F.contact_point(centre, radius, axle)
