@@ -523,7 +523,7 @@ class _Builder:
         radius = self.expression(decl.radius, f"{where}.radius", self.scopes.constant)
         frame = self._rolling_frame(decl, body, where) if body is not None else None
         surface = self._surface(decl, where)
-        if radius is not None and (problem := radius_problem(radius)):
+        if radius is not None and (problem := radius_problem(radius, self.known)):
             self.error(decl.radius, f"{where}.radius", problem)
             return []
         if body is None or radius is None or frame is None or surface is None:
@@ -536,7 +536,7 @@ class _Builder:
                 self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
                 return []
             local = sp.Matrix(local)
-            if problem := axle_problem(local, dcm):  # else the contact divides by zero: rows lost
+            if problem := axle_problem(local, dcm, self.known):  # else the contact divides by zero: rows lost
                 self.error(decl.axle.node, f"{where}.axle", problem)
                 return []
             axle = dcm * (local / sp.sqrt(local.dot(local)))

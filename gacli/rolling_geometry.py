@@ -9,6 +9,8 @@ the message of the problem, or "" when there is none.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import sympy as sp
 
 from gacli.integrability import UndefinedValue, evaluate, sample_points
@@ -17,37 +19,38 @@ from gacli.integrability import UndefinedValue, evaluate, sample_points
 NOT_POSITIVE = "the radius must be positive: with a radius of 0 or less there is no contact point below the centre"
 
 
-def radius_problem(radius: sp.Expr) -> str:
-    """A radius that is not positive: a number <= 0, or an expression SymPy knows is."""
+def radius_problem(radius: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
+    """A radius that is not positive: a number <= 0, an expression SymPy knows is, or one
+    whose parameters' values (``known``) make it so."""
     if radius.is_nonpositive or radius.is_extended_real is False:
         return NOT_POSITIVE
-    if radius.free_symbols:
+    if not radius.free_symbols <= set(known):
         return ""
     try:
-        value = evaluate(radius, {})[0]
+        value = evaluate(radius, known)[0]
     except UndefinedValue:
         return "the radius has no real value"
     return "" if value > 0 else NOT_POSITIVE
 
 
-def axle_problem(local: sp.Matrix, dcm: sp.Matrix) -> str:
+def axle_problem(local: sp.Matrix, dcm: sp.Matrix, known: Mapping[sp.Symbol, float]) -> str:
     """A zero axle, or one along the plane's normal at every configuration tried."""
-    if _vanishes_everywhere(local.dot(local)):
+    if _vanishes_everywhere(local.dot(local), known):
         return "the axle is the zero vector: it gives no direction"
     world = dcm * local
-    if _vanishes_everywhere(world[0] ** 2 + world[1] ** 2):
+    if _vanishes_everywhere(world[0] ** 2 + world[1] ** 2, known):
         return ("the axle is along the plane's normal: the wheel lies flat on the plane "
                 "and has no single contact point")
     return ""
 
 
-def _vanishes_everywhere(expr: sp.Expr) -> bool:
-    """Zero (exactly, or within 1e-12 at three generic points); cheap, never simplify()."""
+def _vanishes_everywhere(expr: sp.Expr, known: Mapping[sp.Symbol, float]) -> bool:
+    """Zero (exactly, or within 1e-12 at three generic points, parameters at their values);
+    cheap, never simplify()."""
     if expr == 0:
         return True
-    if not expr.free_symbols and expr.is_number:
-        return _near_zero(expr, {})
-    return all(_near_zero(expr, point) for point in sample_points(expr.free_symbols, 3))
+    free = expr.free_symbols - set(known)
+    return all(_near_zero(expr, {**known, **point}) for point in sample_points(free, 3))
 
 
 def _near_zero(expr: sp.Expr, point) -> bool:
