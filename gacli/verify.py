@@ -487,8 +487,14 @@ def format_report(report: VerifyReport) -> list[str]:
                 lines.append(f"    {d.equation:<{width}}  {d.max_relative:9.2e}  {'ok' if d.passed else 'FAILED'}")
     lines.append(f"  M symmetric: relative asymmetry {report.mass_asymmetry:.2e}  "
                  f"{'ok' if report.mass_symmetric else 'FAILED'}")
-    lines.append(f"  M positive definite: smallest eigenvalue / largest {report.mass_min_eigenvalue:.3g}  "
-                 f"{'ok' if report.mass_positive_definite else 'FAILED'}")
+    shown, which = report.mass_min_eigenvalue, ""
+    if report.unphysical:  # the note says why the other samples do not count
+        shown, which = report.physical_min_eigenvalue, " (over the physical samples)"
+    if shown == math.inf:
+        lines.append("  M positive definite: not judged (no sample had physical parameters)")
+    else:
+        lines.append(f"  M positive definite{which}: smallest eigenvalue / largest {shown:.3g}  "
+                     f"{'ok' if report.mass_positive_definite else 'FAILED'}")
     for note in report.notes:
         lines.append(f"  note: {note}")
     if report.passed:

@@ -171,3 +171,12 @@ def test_verify_blames_a_sample_that_cannot_be_physical():
     report = verify(system, derive(system), samples=3)
     assert report.passed, report.failures
     assert any("the sample, not the derivation, is at fault" in n and "mass of body" in n for n in report.notes)
+
+
+def test_verify_report_says_m_was_not_judged_on_unphysical_samples():
+    from gacli.verify import format_report, verify
+
+    system = loads(PRODUCTS.read_text(encoding="utf-8").replace("m: {description: mass}", "m: {value: -1}"))
+    lines = format_report(verify(system, derive(system), samples=2))
+    assert "  M positive definite: not judged (no sample had physical parameters)" in lines
+    assert lines[-1] == "verify: passed"
