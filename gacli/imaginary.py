@@ -6,8 +6,10 @@ conjugating them, so an ``I`` in a position turns into a negative mass and
 ``sqrt(-1)`` and ``log(-1)`` as soon as they are built; ``asin(2)`` or
 ``(-2)**(1/3)`` stay as they are and are complex only when evaluated; and
 ``asin(2 + x**2)`` is complex at every state. :func:`imaginary_problem`
-finds all three, so that ``gacli check`` and ``gacli derive`` stop with the
-place of the expression instead of deriving nonsense.
+finds all three, and a number past the range of a double (``1e300*1e300``,
+which generated code would turn into an infinity), so that ``gacli check``
+and ``gacli derive`` stop with the place of the expression instead of
+deriving nonsense.
 
 Sampling is conservative: an expression is refused only when it is complex
 at every sample point where it has a value, points of either sign included,
@@ -16,6 +18,7 @@ so that ``sqrt(1 - theta**2)`` (real for small angles) is accepted.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 
 import sympy as sp
@@ -35,6 +38,9 @@ def imaginary_problem(expr: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
     every other symbol is sampled.
     """
     node = _imaginary_constant(expr)
+    if node is not None and node.is_Number:
+        return (f"the number {sp.Float(node, 3)} is beyond the range of a double (about 1.8e308): "
+                "the generated code would compute with an infinity")
     if node is sp.I:
         return ("the expression is imaginary (a square root, power or logarithm of a negative number): "
                 "positions, masses, inertias, forms and loads must be real")
@@ -51,14 +57,15 @@ def imaginary_problem(expr: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
 
 
 def _imaginary_constant(expr: sp.Expr) -> sp.Basic | None:
-    """The imaginary unit, or the first constant function or power that is complex.
+    """The imaginary unit, a number too large for a double, or the first constant function
+    or power that is complex.
 
     Evaluated in floating point, not by SymPy's ``is_extended_real``: that
     asks evalf, which raises or runs for hours on ``cosh(cosh(1e300))``.
     """
     constants = []
     for node in postorder([expr]):
-        if node is sp.I:
+        if node is sp.I or (node.is_Number and node.is_finite and abs(float(node)) == math.inf):
             return node
         if (node.is_Pow or node.is_Function) and not node.free_symbols:
             constants.append(node)
