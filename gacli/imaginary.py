@@ -12,8 +12,9 @@ and ``gacli derive`` stop with the place of the expression instead of
 deriving nonsense.
 
 Sampling is conservative: an expression is refused only when it is complex
-at every sample point where it has a value, points of either sign included,
-so that ``sqrt(1 - theta**2)`` (real for small angles) is accepted.
+at every sample point where it has a value, points of either sign and of
+sizes from 1e-4 to 1e4 included, so that ``sqrt(1 - theta**2)`` (real for
+small angles) and ``sqrt(l**2 - x**2)`` with ``l: 0.01`` are accepted.
 """
 
 from __future__ import annotations
@@ -28,6 +29,9 @@ from gacli.integrability import sample_points
 from gacli.numeric import Program
 
 SAMPLES = 3          # unsigned points, and as many of either sign
+# Each point also scaled: sqrt(l**2 - x**2) with l = 0.1 is real only for small x,
+# sqrt(x - 10) only for large x; a file's lengths may be of any size.
+SCALES = (1.0, 1e-2, 1e-4, 1e2, 1e4)
 TOLERANCE = 1e-9     # relative size of an imaginary part taken as rounding
 
 
@@ -96,7 +100,8 @@ def _complex(program: Program | None, values) -> bool | None:
 def _always_complex(expr: sp.Expr, known: Mapping[sp.Symbol, float]) -> dict | None:
     """A sample point where ``expr`` is complex, when it is complex at every one with a value."""
     free = expr.free_symbols - set(known)
-    points = sample_points(free, SAMPLES) + sample_points(free, SAMPLES, seed=7, signed=True) if free else [{}]
+    base = sample_points(free, SAMPLES) + sample_points(free, SAMPLES, seed=7, signed=True) if free else [{}]
+    points = [{s: v * scale for s, v in point.items()} for scale in SCALES for point in base] if free else base
     example, program = None, _program(expr)
     for point in points:
         verdict = _complex(program, {**known, **point})

@@ -127,8 +127,9 @@ rolling:
 """
 
 
-def test_a_position_real_only_on_part_of_the_states_is_accepted():
-    loads(SPHERE.replace("POSITION", "sqrt(1 - theta**2)").replace("RADIUS", "1"))
+@pytest.mark.parametrize("position", ["sqrt(1 - theta**2)", "sqrt(0.0001 - theta**2)", "sqrt(theta - 50)"])
+def test_a_position_real_only_on_part_of_the_states_is_accepted(position):
+    loads(SPHERE.replace("POSITION", position).replace("RADIUS", "1"))
 
 
 def test_a_sphere_of_radius_zero_is_refused():
