@@ -371,15 +371,19 @@ def _check_mass_matrix(derivation: Derivation, findings: _Findings) -> MassMatri
     M, F = derivation.mass_matrix, derivation.forcing
     system = derivation.system
     where = system.location
-    if any(node in _UNDEFINED for node in postorder([*M, *F])):
+    nodes = set(postorder([*M, *F, *(e for _, e in derivation.kinematic_equations)]))
+    if any(node in nodes for node in _UNDEFINED):
         findings.error("the equations contain an undefined value (zoo or nan: a division by zero or a "
                        "logarithm of zero somewhere in the file)", "equations", location=where)
+    if sp.I in nodes:  # the loader refuses an imaginary expression; this is the last guard
+        findings.error("the equations contain the imaginary unit I: M, F and the kinematic equations must be real",
+                       "equations", location=where)
     symmetric = _symmetric(M, findings, where)
     values, missing = parameter_values(system)
     if missing:
         note = f"not checked: no value for {', '.join(missing)}"
         return MassMatrixCheck(symmetric, None, 0, note)
-    return _positive_definite(M, values, symmetric, findings, where)
+    return _positive_definite(system, M, values, symmetric, findings, where)
 
 
 def _symmetric(M: sp.ImmutableMatrix, findings: _Findings, where: Location) -> bool | None:
@@ -410,12 +414,16 @@ def parameter_values(system: System) -> tuple[dict[sp.Symbol, float], list[str]]
     return values, missing
 
 
-def _positive_definite(M, values, symmetric, findings: _Findings, where: Location) -> MassMatrixCheck:
+def _positive_definite(system: System, M, values, symmetric, findings: _Findings,
+                       where: Location) -> MassMatrixCheck:
     others = sorted(free_symbols(M) - set(values), key=lambda s: s.name)
+    # Symbols only in positions get values too, from their own stream: M's samples stay as they were.
+    placed = free_symbols([c for body in system.bodies for c in body.position]) - set(values) - set(others)
     evaluated = 0
-    for point in sample_points(others, PD_SAMPLES):
-        state = {**values, **point}
+    for point, more in zip(sample_points(others, PD_SAMPLES), sample_points(placed, PD_SAMPLES, seed=11)):
+        state = {**values, **more, **point}
         try:
+            _require_real_positions(system, state)
             numeric = np.array([[float(evaluate(M[i, j], state)[0]) for j in range(M.cols)] for i in range(M.rows)])
         except UndefinedValue:
             continue
@@ -432,6 +440,16 @@ def _positive_definite(M, values, symmetric, findings: _Findings, where: Locatio
     if evaluated == 0:
         return MassMatrixCheck(symmetric, None, 0, "not checked: M has no real value at the sample states")
     return MassMatrixCheck(symmetric, True, evaluated)
+
+
+def _require_real_positions(system: System, state) -> None:
+    """UndefinedValue when a position is not real at the state: M there says nothing of the file.
+
+    ``sqrt(1 - x**2)`` is a position only for |x| <= 1; beyond, M is real but meaningless.
+    """
+    for body in system.bodies:
+        for coordinate in body.position:
+            evaluate(coordinate, state)
 
 
 # -- many files ----------------------------------------------------------------

@@ -21,6 +21,9 @@ from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
+from gacli.imaginary import imaginary_problem
+from gacli.numeric import Program
+from gacli.rolling_geometry import axle_problem, radius_problem
 from gacli.model import (
     Body,
     Constraint,
@@ -86,6 +89,7 @@ def load_source(source: SourceFile) -> System:
 class _Builder:
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
 
     # -- reporting ---------------------------------------------------------
     @property
@@ -106,11 +110,15 @@ class _Builder:
             return None
         piece = text.text[start:stop]
         try:
-            return build(parse(piece), scope)
+            expr = build(parse(piece), scope)
         except ParseError as exc:
             self.error(text, where, exc.message, offset=start + exc.pos)
         except BuildError as exc:
             self.error(text, where, exc.message, exc.hint, offset=start + exc.pos)
+        else:
+            if not (problem := imaginary_problem(expr, self.known)):
+                return expr
+            self.error(text, where, problem, offset=start)
         return None
 
     # -- the whole system --------------------------------------------------
@@ -187,7 +195,19 @@ class _Builder:
                 value = self.expression(sym.value, f"parameters.{sym.name}.value", scope)
             out.append(Parameter(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))
             earlier[sym.name] = S.value(sym.name)
+            self._remember(earlier[sym.name], value)
         return tuple(out)
+
+    def _remember(self, symbol: sp.Symbol, value: sp.Expr | None) -> None:
+        """The parameter's number, for telling later expressions that are never real."""
+        if value is None or not value.free_symbols <= set(self.known):
+            return
+        try:  # Program, not evalf: evalf of exp(exp(exp(100))) would take hours
+            number = Program([value])(self.known)[0]
+        except (TypeError, ValueError, ArithmeticError):
+            return
+        if number.imag == 0:
+            self.known[symbol] = number.real
 
     def _functions(self, parameters: tuple[Parameter, ...]) -> tuple[Function, ...]:
         values = {p.name: S.value(p.name) for p in parameters}
@@ -503,6 +523,9 @@ class _Builder:
         radius = self.expression(decl.radius, f"{where}.radius", self.scopes.constant)
         frame = self._rolling_frame(decl, body, where) if body is not None else None
         surface = self._surface(decl, where)
+        if radius is not None and (problem := radius_problem(radius, self.known)):
+            self.error(decl.radius, f"{where}.radius", problem)
+            return []
         if body is None or radius is None or frame is None or surface is None:
             return []
         dcm = sp.Matrix(frame.dcm)
@@ -513,6 +536,9 @@ class _Builder:
                 self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
                 return []
             local = sp.Matrix(local)
+            if problem := axle_problem(local, dcm, self.known):  # else the contact divides by zero: rows lost
+                self.error(decl.axle.node, f"{where}.axle", problem)
+                return []
             axle = dcm * (local / sp.sqrt(local.dot(local)))
         centre = sp.Matrix(body.position)
         contact = F.contact_point(centre, radius, axle)

@@ -63,6 +63,7 @@ from gacli import symbols as S
 from gacli.errors import DerivationError
 from gacli.graph import substitute
 from gacli.model import Body, Form, System
+from gacli.numeric import sample_parameters
 from gacli.readable import displayable
 
 DEFAULT_SEED = 1410
@@ -324,16 +325,18 @@ def _column(m, size: int) -> list:
     return [m[i, 0] for i in range(size)] if size else []
 
 
-def _parameter_values(system: System, rng: np.random.Generator) -> dict[sp.Symbol, object]:
-    """File values (expressions in earlier parameters) where given, else random positive."""
+def _parameter_values(system: System, rng: np.random.Generator) -> tuple[dict[sp.Symbol, object], str]:
+    """File values (expressions in earlier parameters) where given, else random and physical
+    (:func:`gacli.numeric.sample_parameters`); and what is unphysical about them ("" if nothing)."""
+    sample = sample_parameters(system, rng)
     values: dict[sp.Symbol, object] = {}
     for p in system.parameters:
         if p.value is None:
-            values[S.value(p.name)] = _mp(rng.uniform(0.5, 2.0))
+            values[S.value(p.name)] = _mp(sample.values[S.value(p.name)])
         else:
             exact = {s: sp.Float(str(v), _DPS + 5) for s, v in values.items()}
             values[S.value(p.name)] = _mp(str(sp.N(p.value.xreplace(exact), _DPS + 5)))
-    return values
+    return values, sample.problem
 
 
 def _solve(K: mpmath.matrix, b: mpmath.matrix) -> tuple[mpmath.matrix, list[int]]:
@@ -424,6 +427,8 @@ class VerifyReport:
     mass_min_eigenvalue: float             # min over samples of λ_min(M) / λ_max(M)
     undetermined: tuple[str, ...]          # rates whose acceleration the fundamental equation leaves free
     notes: tuple[str, ...] = ()
+    unphysical: str = ""                   # what was wrong with the parameters of some samples
+    physical_min_eigenvalue: float = math.inf  # the minimum over the other samples (inf: none)
 
     GROUPS = (
         ("accelerations", "accelerations u̇: fundamental equation (14.10) with multipliers vs M u̇ = F (14.19)"),
@@ -438,6 +443,10 @@ class VerifyReport:
 
     @property
     def mass_positive_definite(self) -> bool:
+        """Judged on the samples whose parameters are physical: M of a negative mass is the sample's fault."""
+        if self.unphysical:
+            value = self.physical_min_eigenvalue
+            return value == math.inf or (math.isfinite(value) and value > 1e-24)
         return math.isfinite(self.mass_min_eigenvalue) and self.mass_min_eigenvalue > 1e-24
 
     @property
@@ -478,8 +487,14 @@ def format_report(report: VerifyReport) -> list[str]:
                 lines.append(f"    {d.equation:<{width}}  {d.max_relative:9.2e}  {'ok' if d.passed else 'FAILED'}")
     lines.append(f"  M symmetric: relative asymmetry {report.mass_asymmetry:.2e}  "
                  f"{'ok' if report.mass_symmetric else 'FAILED'}")
-    lines.append(f"  M positive definite: smallest eigenvalue / largest {report.mass_min_eigenvalue:.3g}  "
-                 f"{'ok' if report.mass_positive_definite else 'FAILED'}")
+    shown, which = report.mass_min_eigenvalue, ""
+    if report.unphysical:  # the note says why the other samples do not count
+        shown, which = report.physical_min_eigenvalue, " (over the physical samples)"
+    if shown == math.inf:
+        lines.append("  M positive definite: not judged (no sample had physical parameters)")
+    else:
+        lines.append(f"  M positive definite{which}: smallest eigenvalue / largest {shown:.3g}  "
+                     f"{'ok' if report.mass_positive_definite else 'FAILED'}")
     for note in report.notes:
         lines.append(f"  note: {note}")
     if report.passed:
@@ -585,7 +600,7 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     worst_kin = _Worst(kin_names)
     worst_rates = _Worst([S.rate_name(n, 1) for n in rates.names])
     worst_gibbs = _Worst([f"∂G/∂{S.rate_name(n, 2)}" for n in independent] if gibbs else [])
-    asymmetry, min_eig = 0.0, math.inf
+    asymmetry, min_eig, physical_eig, bad_sample = 0.0, math.inf, math.inf, ""
     undetermined: set[str] = set()
 
     rng = np.random.default_rng(seed)
@@ -593,7 +608,8 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     input_symbols = [S.value(i.name) for i in system.inputs]
     with mpmath.workdps(_DPS):
         for sample in range(samples):
-            values = _parameter_values(system, rng)
+            values, unphysical = _parameter_values(system, rng)
+            bad_sample = bad_sample or unphysical
             values.update({S.value(c): _mp(rng.uniform(0.3, 1.7)) for c in coords})
             values.update({s: _mp(rng.uniform(-1.5, 1.5)) for s in function_symbols + input_symbols})
             values[S.T] = _mp(rng.uniform(0.0, 2.0))
@@ -651,9 +667,11 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
                 try:
                     eig = mpmath.eigsy((M + M.T) / 2, eigvals_only=True)
                     lo, hi = min(eig), max(abs(x) for x in eig)
-                    min_eig = min(min_eig, float(lo / hi) if hi else -math.inf)
+                    ratio = float(lo / hi) if hi else -math.inf
                 except (ZeroDivisionError, ArithmeticError, ValueError):
-                    min_eig = -math.inf
+                    ratio = -math.inf
+                min_eig = min(min_eig, ratio)
+                physical_eig = physical_eig if unphysical else min(physical_eig, ratio)
             singular: list[int] = []
             try:
                 udot = _column(mpmath.lu_solve(M, F), k) if k else []
@@ -687,8 +705,18 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
         accelerations=worst_acc.result(tol), kinematics=worst_kin.result(tol),
         rates=worst_rates.result(tol), gibbs=worst_gibbs.result(tol),
         mass_asymmetry=asymmetry, mass_min_eigenvalue=min_eig if k else 1.0,
-        undetermined=tuple(n for n in names if n in undetermined), notes=tuple(dict.fromkeys(notes)),
+        undetermined=tuple(n for n in names if n in undetermined),
+        notes=tuple(dict.fromkeys(notes + _unphysical_note(bad_sample, min_eig))),
+        unphysical=bad_sample, physical_min_eigenvalue=physical_eig if k else 1.0,
     )
+
+
+def _unphysical_note(problem: str, min_eig: float) -> list[str]:
+    if not problem:
+        return []
+    verdict = ("M is not positive definite there: the sample, not the derivation, is at fault"
+               if not (math.isfinite(min_eig) and min_eig > 1e-24) else "M stayed positive definite")
+    return [f"no physical parameter values were found for some samples ({problem}); {verdict}"]
 
 
 def _kkt_entries(mass, A, loads, inertial, rest, N: int, m: int, zero) -> tuple[list[list], list]:

@@ -20,6 +20,7 @@ factorization written as loops for the fixed size k.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from string import Template
 
@@ -171,8 +172,22 @@ def emit_c(derivation: Derivation, *, reactions: bool = False) -> dict[str, str]
 # -- header pieces ---------------------------------------------------------------
 
 def _comment(lines: Sequence[str]) -> str:
-    safe = [line.replace("*/", "* /") for line in lines]
+    safe = [comment_text(line) for line in lines]
     return "\n".join(["/* " + safe[0], *(" * " + line for line in safe[1:]), " */"])
+
+
+# '/*' inside a comment fails -Werror=comment and '*/' ends it early; a trigraph
+# (C99 has them) such as '??/' is a backslash, and a backslash at a line's end
+# splices the next line of the comment into it.
+_SLASH_STAR = re.compile(r"/(?=\*)|\*(?=/)")
+_TRIGRAPH = re.compile(r"\?(?=\?[=(/)'<!>-])")
+
+
+def comment_text(text: str) -> str:
+    """Free text (a title, a file name) made inert inside a C block comment, on one line."""
+    text = _SLASH_STAR.sub(lambda m: m.group() + " ", text)
+    text = _TRIGRAPH.sub("? ", text)
+    return text.rstrip("\\ ")
 
 
 def _sizes(lay: Layout) -> str:

@@ -71,10 +71,46 @@ class _NamedSymbols:
             raise UnsupportedNode(expr, self.language) from None
 
 
-class GacliPythonPrinter(_NamedSymbols, PythonCodePrinter):
+# Integers beyond 2**53 are not exact in a double anyway; past ~19 digits a C
+# compiler refuses the integer literal, and Python's int * float overflows
+# past 1e308. Derivations can make exact rationals of hundreds of digits.
+EXACT_LIMIT = 2 ** 53
+
+
+def wide(number: sp.Rational) -> bool:
+    """True when the numerator or denominator does not fit in a double's 53 bits."""
+    return abs(int(number.p)) >= EXACT_LIMIT or int(number.q) >= EXACT_LIMIT
+
+
+class _Numbers:
+    """Mixin: wide integers and rationals print as a floating literal, the nearest double.
+
+    Small ones keep SymPy's exact printing (``1.0/3.0``, ``1/3``), so the
+    code of ordinary systems is unchanged.
+    """
+
+    infinity: str  # the language's name for an infinite double
+
+    def _wide_literal(self, number: sp.Rational) -> str:
+        value = float(number)  # correctly rounded by SymPy, inf past the double range
+        if value in (float("inf"), float("-inf")):
+            text = self.infinity
+            return f"(-{text})" if value < 0 else text
+        text = repr(value)
+        return f"({text})" if value < 0 else text
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        return self._wide_literal(expr) if wide(expr) else super()._print_Rational(expr)
+
+    def _print_Integer(self, expr: sp.Integer) -> str:
+        return self._wide_literal(expr) if wide(expr) else super()._print_Integer(expr)
+
+
+class GacliPythonPrinter(_Numbers, _NamedSymbols, PythonCodePrinter):
     """Python (``math`` module) code for scalar expressions."""
 
     language = "Python"
+    infinity = "math.inf"
 
     def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
         super().__init__({"fully_qualified_modules": True, **(settings or {}), "strict": True})
@@ -89,10 +125,11 @@ class GacliPythonPrinter(_NamedSymbols, PythonCodePrinter):
         return modules
 
 
-class GacliCPrinter(_NamedSymbols, C99CodePrinter):
+class GacliCPrinter(_Numbers, _NamedSymbols, C99CodePrinter):
     """C99 code: no ``M_PI``-style macros (they fail under ``-std=c99 -pedantic``)."""
 
     language = "C"
+    infinity = "HUGE_VAL"  # <math.h>, C99
 
     def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
         super().__init__({**(settings or {}), "math_macros": {}, "strict": True})

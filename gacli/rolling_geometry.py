@@ -1,0 +1,61 @@
+"""Rolling declarations whose geometry is degenerate, refused before their rows are built.
+
+A wheel of radius 0, a zero axle or an axle along the plane's normal (a
+wheel lying flat) makes :func:`gacli.frames.contact_point` divide by zero
+or put the contact at the centre: the rolling rows then vanish or become
+``zoo`` and the constraints are lost without a word. Each function returns
+the message of the problem, or "" when there is none.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy as sp
+
+from gacli.integrability import UndefinedValue, evaluate, sample_points
+
+
+NOT_POSITIVE = "the radius must be positive: with a radius of 0 or less there is no contact point below the centre"
+
+
+def radius_problem(radius: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
+    """A radius that is not positive: a number <= 0, an expression SymPy knows is, or one
+    whose parameters' values (``known``) make it so."""
+    if radius.is_nonpositive or radius.is_extended_real is False:
+        return NOT_POSITIVE
+    if not radius.free_symbols <= set(known):
+        return ""
+    try:
+        value = evaluate(radius, known)[0]
+    except UndefinedValue:
+        return "the radius has no real value"
+    return "" if value > 0 else NOT_POSITIVE
+
+
+def axle_problem(local: sp.Matrix, dcm: sp.Matrix, known: Mapping[sp.Symbol, float]) -> str:
+    """A zero axle, or one along the plane's normal at every configuration tried."""
+    if _vanishes_everywhere(local.dot(local), known):
+        return "the axle is the zero vector: it gives no direction"
+    world = dcm * local
+    if _vanishes_everywhere(world[0] ** 2 + world[1] ** 2, known):
+        return ("the axle is along the plane's normal: the wheel lies flat on the plane "
+                "and has no single contact point")
+    return ""
+
+
+def _vanishes_everywhere(expr: sp.Expr, known: Mapping[sp.Symbol, float]) -> bool:
+    """Zero (exactly, or within 1e-12 at three generic points, parameters at their values);
+    cheap, never simplify()."""
+    if expr == 0:
+        return True
+    free = expr.free_symbols - set(known)
+    return all(_near_zero(expr, {**known, **point}) for point in sample_points(free, 3))
+
+
+def _near_zero(expr: sp.Expr, point) -> bool:
+    try:
+        value, scale = evaluate(expr, point)
+    except UndefinedValue:
+        return False
+    return abs(value) <= 1e-12 * max(1, scale)
