@@ -544,8 +544,9 @@ class _Builder:
         contact = F.contact_point(centre, radius, axle)
         rows = F.rolling_rows(self._velocity_form(body.position), dcm * sp.Matrix(frame.omega), contact - centre,
                               F.cross_form(sp.Matrix(surface.dcm) * sp.Matrix(surface.omega), contact))
+        rows = F.in_wheel_heading(rows, axle)
         return [Constraint(self._row_form(rows[i, :]), self.where_of(decl.node),
-                           f"rolling of {body.name} ({'xyz'[i]})", derived=True)
+                           f"rolling of {body.name} ({_ROW_NAMES[axle is None][i]})", derived=True)
                 for i in range(3) if not _vanishes(rows[i, :])]
 
     def _rolling_frame(self, decl: RollingDecl, body: Body, where: str) -> F.Frame | None:
@@ -583,6 +584,10 @@ class _Builder:
             else:
                 names.append(node.text)
         return tuple(names)
+
+
+# Rolling rows: along a wheel (frames.in_wheel_heading), or N's axes for a sphere.
+_ROW_NAMES = {False: ("forward", "sideways", "normal"), True: ("x", "y", "z")}
 
 
 def _vanishes(row: sp.Matrix) -> bool:
