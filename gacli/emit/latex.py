@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import re
+import sys
 import textwrap
 import unicodedata
 from collections.abc import Mapping
@@ -27,12 +28,9 @@ from gacli.equations import Derivation
 from gacli.gibbs import gibbs_coefficients
 from gacli.graph import is_small
 from gacli.model import System
-from gacli.readable import TOO_LARGE, displayable
+from gacli.readable import TOO_LARGE, Tidy, displayable
 from gacli.texsafe import is_printable_name
 
-# `sympy.simplify` runs only below this many operations (it is slow and
-# superlinear); bigger expressions are first reduced with cancel/factor_terms.
-SIMPLIFY_OPS = 120
 # Rough printed width (in characters of typeset maths) before a sum is broken.
 LINE_WIDTH = 44
 # Characters of free text (a title, a source) on one line of the .tex file.
@@ -64,6 +62,26 @@ def upright_name(name: str) -> str:
     ``beth`` (\\beth needs amssymb), ``xscr`` (\\mathscr), ``_K`` (a bare subscript), ``__x``
     (a double subscript)."""
     return r"\mathrm{%s}" % name.replace("_", r"\_")
+
+
+def _is_word(head: str) -> bool:
+    """A head of several plain letters (``yaw``, ``lean``), which SymPy prints as italic letters."""
+    return len(head) > 1 and head.isascii() and head.isalpha()
+
+
+def has_words(system: System) -> bool:
+    """Whether some declared name prints as an upright word, so products need a visible separation."""
+    printer = GacliLatexPrinter(latex_names(system))
+    groups = (system.parameters, system.functions, system.inputs, system.coordinates, system.quasi_coordinates)
+    return any(printer.doprint(sp.Symbol(item.name)).startswith(r"\mathrm{") for group in groups for item in group)
+
+
+def printer_for(system: System, settings: dict | None = None) -> "GacliLatexPrinter":
+    """The printer of a system's names; factors are set apart by a thin space when a name is a word."""
+    settings = dict(settings or {})
+    if has_words(system):
+        settings.setdefault("mul_symbol", r"\,")
+    return GacliLatexPrinter(latex_names(system), settings)
 
 
 class GacliLatexPrinter(LatexPrinter):
@@ -103,6 +121,8 @@ class GacliLatexPrinter(LatexPrinter):
             tail = ("^{%s}" % " ".join(supers) if supers else "") + ("_{%s}" % " ".join(subs) if subs else "")
             if base.startswith("_") or base.endswith("_") or not is_printable_name(head + tail):
                 head, tail = upright_name(base), ""
+            elif _is_word(head):
+                head = r"\mathrm{%s}" % head  # yaw is one name, not y·a·w
         if order == 0:
             return head + tail
         if order in _DOTS:
@@ -132,7 +152,7 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     \frac{\partial G}{\partial \ddot{z}} &= m \, \ddot{z} = - g m
     """
     system = derivation.system
-    printer = GacliLatexPrinter(latex_names(system), {"fold_func_brackets": True})
+    printer = printer_for(system, {"fold_func_brackets": True})
     if not displayable(derivation):
         # Shown in a fragment too: an \input of the file would otherwise show nothing at all.
         sections = [_Section("Equations", _text(TOO_LARGE), [], shown=True)]
@@ -144,7 +164,7 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
             _Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer)),
             _Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer),
                      _equation_rows(derivation, printer), gap="[1ex]"),
-            _Section("Kinematic equations (eq. 14.20)", "", _kinematic_rows(derivation, printer)),
+            _kinematic_section(derivation, printer),
         ]
     lines = _header(system)
     lines += _document(system, sections) if standalone else _fragment(sections)
@@ -208,8 +228,7 @@ def _step_sections(derivation: Derivation) -> list[_Section]:
     """The worked solution: one subsection a step, prose as text, equations in align*."""
     from gacli.steps import worked_solution
 
-    printer = GacliLatexPrinter(latex_names(derivation.system),
-                                {"fold_func_brackets": True, "symbol_names": _step_symbols(derivation)})
+    printer = printer_for(derivation.system, {"fold_func_brackets": True, "symbol_names": _step_symbols(derivation)})
     sections = []
     for step in worked_solution(derivation):
         sections += _step_blocks(step, printer)
@@ -315,10 +334,17 @@ def _equation_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[l
     return groups
 
 
+def _kinematic_section(derivation: Derivation, printer: GacliLatexPrinter) -> "_Section":
+    rows = _kinematic_rows(derivation, printer)
+    note = "" if rows else "Every coordinate is independent: its rate is one of the speeds."
+    return _Section("Kinematic equations (eq. 14.20)", note, rows)
+
+
 def _kinematic_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
+    # An independent coordinate's q̇ = q̇ says nothing: left out, as by hand.
     return [
         _sum_rows(printer.doprint(S.rate(name)), _terms(tidy(rate), printer) or _ZERO)
-        for name, rate in derivation.kinematic_equations
+        for name, rate in derivation.kinematic_equations if rate != S.rate(name)
     ]
 
 
@@ -329,14 +355,8 @@ _ZERO: list[Term] = [(False, "0")]
 
 
 def tidy(expr: sp.Expr) -> sp.Expr:
-    """A simpler equal expression for display, on a small budget."""
-    if not is_small(expr, 20 * SIMPLIFY_OPS):
-        return expr
-    if sp.count_ops(expr) > SIMPLIFY_OPS:
-        expr = sp.factor_terms(sp.cancel(expr))
-    if sp.count_ops(expr) <= SIMPLIFY_OPS:
-        expr = sp.simplify(expr)
-    return expr
+    """The display simplifier that text uses too (:func:`gacli.readable.readable`), within its size bounds."""
+    return Tidy(budget=sys.maxsize)(expr)
 
 
 def _terms(expr: sp.Expr, printer: GacliLatexPrinter) -> list[Term]:
