@@ -17,6 +17,7 @@ as graphs of shared subexpressions, which this generic harness does not do.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,6 +28,12 @@ from make_pendulum import write_pendulum
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
+
+# A script in benchmarks/ has benchmarks/, not the checkout, first on sys.path:
+# `import gacli` would find an installed gacli (an editable install of another
+# checkout, say) and the benchmark would measure that code. This checkout first.
+if sys.path[0] != str(ROOT):
+    sys.path.insert(0, str(ROOT))
 
 CASE_NAMES = ("pendulum", "chain", "disk")
 DEFAULT_CASES = ("pendulum", "chain", "disk")

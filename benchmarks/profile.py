@@ -30,6 +30,7 @@ import cProfile  # noqa: E402
 import pstats  # noqa: E402
 
 sys.path[:] = _saved
+sys.path.insert(0, str(Path(_HERE).parent))  # this checkout's gacli, not an installed one
 
 from sympy.core.cache import clear_cache  # noqa: E402
 

