@@ -92,6 +92,19 @@ def test_compiles_cleanly_under_strict_flags(name, compiler, tmp_path):
 
 
 @pytest.mark.parametrize("compiler", COMPILERS)
+@pytest.mark.parametrize("name", [n for n in ALL if n != "whipple_bicycle"])
+def test_reactions_compile_cleanly_under_strict_flags(name, compiler, tmp_path):
+    """With --reactions too: a system without constraints leaves lambda unwritten, and says so."""
+    d = derived(name)
+    (tmp_path / f"{name}.h").write_text(emit_c(d, reactions=True)[f"{name}.h"], encoding="utf-8")
+    source = tmp_path / f"{name}.c"
+    source.write_text(emit_c(d, reactions=True)[f"{name}.c"], encoding="utf-8")
+    command = [need(compiler), *STRICT, "-Wunused", "-c", str(source), "-o", str(tmp_path / "out.o")]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0 and not result.stderr, result.stderr
+
+
+@pytest.mark.parametrize("compiler", COMPILERS)
 @pytest.mark.parametrize("name", sorted(EXTRA))
 def test_the_tests_own_systems_compile(name, compiler, tmp_path):
     compile_c(extra(name), tmp_path, compiler)

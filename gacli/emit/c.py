@@ -260,7 +260,9 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
     solve = reaction_solve(derivation)
     if solve is None:
         block = _block(lay, reaction_equations(derivation))
-        return _function(lay, "reactions", [], block, _assign("lambda", block.results))
+        # No constraint, no multiplier: the output array is never written, and -Wextra says so.
+        none = [] if block.results else ["(void)lambda;"]
+        return _function(lay, "reactions", none, block, _assign("lambda", block.results))
     if solve.redundant:
         raise EmitError(
             f"{derivation.system.path}: the constraint forces of a system this large with repeated constraint "
