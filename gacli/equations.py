@@ -187,7 +187,7 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
         M[i][j] = _reduced(_sum_grouped(groups), groups)
         if symmetric:
             M[j][i] = M[i][j]
-    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups, Q[s]) for s, groups in enumerate(rest_terms)]
+    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups) for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 
@@ -285,17 +285,19 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
     return sp.Add(*out)
 
 
-def _reduced(entry: sp.Expr, groups: dict, other: sp.Expr = sp.S.Zero) -> sp.Expr:
+def _reduced(entry: sp.Expr, groups: dict) -> sp.Expr:
     """``entry`` reduced by sin² + cos² = 1 where its monomials hold a square (see :mod:`gacli.trig`).
 
     The monomials are at hand as dicts of exponents: reading them costs far
     less than the reduction's own walk of the entry, and a chain of
-    pendulums has no square in most entries.
+    pendulums has no square in most entries. Q, added to F, is reduced
+    already (:mod:`gacli.forces`): with no square among the other terms, the
+    sum is in normal form too.
     """
     for key, (powers, _) in groups.items():
         if powers is None or any(_may_square(base, exp) for base, exp in powers.items()):
             return trig.reduce(entry)
-    return trig.reduce(entry) if other.has(sp.sin, sp.cos) else entry
+    return entry
 
 
 def _may_square(base: sp.Expr, exp: sp.Expr) -> bool:

@@ -21,12 +21,15 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from gacli.graph import postorder
 
 # Terms of the distributed polynomial past which the reduction is not tried:
 # it stays well below a second, and the equations it is meant for (a few
 # bodies through a frame tree) need a few hundred.
-MAX_TERMS = 4_000
+MAX_TERMS = 2_000
+# Terms formed in all the products of one reduction, past which it stops:
+# a large entry that would end unchanged must not cost much to find so.
+MAX_WORK = 6_000
+_WORK = object()  # the memo's key for the work done so far
 # A coefficient is multiplied out to see whether it cancels only below this many terms.
 COEFFICIENT_TERMS = 400
 # Distinct subexpressions past which an expression is not even looked at.
@@ -42,12 +45,16 @@ class _TooLarge(Exception):
 
 def reduce(expr: sp.Expr) -> sp.Expr:
     """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap."""
-    if not isinstance(expr, sp.Expr) or not _may_square(expr):
-        return expr
     try:
-        poly = _distribute(expr)
+        return _reduce(expr, {_WORK: 0})
     except _TooLarge:
         return expr
+
+
+def _reduce(expr: sp.Expr, memo: dict) -> sp.Expr:
+    if not isinstance(expr, sp.Expr) or not _may_square(expr):
+        return expr
+    poly = _distribute(expr, memo)
     angles = _angles(poly)
     if not angles:
         return expr
@@ -69,44 +76,72 @@ def _may_square(expr: sp.Expr) -> bool:
     power of a sum that holds one, or a product of two factors that hold the
     same sine (or the same cosine); sin θ · cos θ is no square. A chain of
     pendulums has none in most entries, and skipping them keeps the
-    reduction nearly free there.
+    reduction nearly free there. An expression of more than MAX_NODES
+    distinct subexpressions counts as none: it is too large to distribute.
     """
     held: dict[sp.Basic, frozenset] = {}
-    for count, node in enumerate(postorder([expr])):
-        if count > MAX_NODES:
-            return False  # too large to distribute anyway
-        if isinstance(node, (sp.sin, sp.cos)):
-            held[node] = frozenset((node,))
-            continue
-        inside = [held.get(a, frozenset()) for a in node.args]
-        if node.is_Pow and inside[0] and node.exp.is_Integer and node.exp >= 2:
-            return True
-        if node.is_Mul:
-            seen: set = set()
-            for part in inside:
-                if seen & part:
-                    return True
-                seen |= part
-        held[node] = frozenset().union(*inside) if inside else frozenset()
+    try:
+        _held(expr, held)
+    except _Square:
+        return True
+    except (_TooLarge, RecursionError):
+        return False
     return False
+
+
+class _Square(Exception):
+    pass
+
+
+_NONE: frozenset = frozenset()
+
+
+def _held(node: sp.Basic, memo: dict) -> frozenset:
+    """The sines and cosines inside ``node``; raises _Square where a product or power could square one."""
+    if node.is_Atom:
+        return _NONE
+    known = memo.get(node)
+    if known is not None:
+        return known
+    if len(memo) > MAX_NODES:
+        raise _TooLarge
+    if isinstance(node, (sp.sin, sp.cos)):
+        known = frozenset((node,))
+    else:
+        parts = [p for p in (_held(a, memo) for a in node.args) if p]
+        if node.is_Pow and parts and node.exp.is_Integer and node.exp >= 2:
+            raise _Square
+        if node.is_Mul and len(parts) > 1 and sum(map(len, parts)) > len(frozenset().union(*parts)):
+            raise _Square
+        known = parts[0] if len(parts) == 1 else frozenset().union(*parts) if parts else _NONE
+    memo[node] = known
+    return known
 
 
 def _is_trig(expr: sp.Expr) -> bool:
     return isinstance(expr, (sp.sin, sp.cos))
 
 
-def _distribute(expr: sp.Expr) -> Poly:
+def _distribute(expr: sp.Expr, memo: dict) -> Poly:
+    """The polynomial of ``expr``; ``memo`` holds those of subexpressions met before (a graph, not a tree)."""
+    known = memo.get(expr)
+    if known is None:
+        known = memo[expr] = _distribute_new(expr, memo)
+    return known
+
+
+def _distribute_new(expr: sp.Expr, memo: dict) -> Poly:
     if expr.is_Add:
         out: Poly = {}
         for term in expr.args:
-            _merge(out, _distribute(term))
+            _merge(out, _distribute(term, memo))
         return _bounded(out)
     if expr.is_Mul:
         out = {frozenset(): [sp.S.One]}
         plain = []
         for factor in expr.args:
             if factor.has(sp.sin, sp.cos):
-                out = _times(out, _distribute(factor))
+                out = _times(out, _distribute(factor, memo), memo)
             else:
                 plain.append(factor)
         if plain:
@@ -119,15 +154,15 @@ def _distribute(expr: sp.Expr) -> Poly:
             return {frozenset(((expr.base, n),)): [sp.S.One]}
         if n > 0 and expr.base.is_Add:
             out = {frozenset(): [sp.S.One]}
-            base = _distribute(expr.base)
+            base = _distribute(expr.base, memo)
             for _ in range(n):
-                out = _times(out, base)
+                out = _times(out, base, memo)
             return out
     if _is_trig(expr):
         return {frozenset(((expr, 1),)): [sp.S.One]}
     if expr.args and not expr.is_Atom:
         # Not a polynomial in the sines and cosines (a quotient, a root): reduce inside it.
-        expr = expr.func(*[reduce(a) if isinstance(a, sp.Expr) else a for a in expr.args])
+        expr = expr.func(*[_reduce(a, memo) if isinstance(a, sp.Expr) else a for a in expr.args])
     return {frozenset(): [expr]}
 
 
@@ -136,7 +171,12 @@ def _merge(into: Poly, other: Poly) -> None:
         into.setdefault(monomial, []).extend(coefficient)
 
 
-def _times(a: Poly, b: Poly) -> Poly:
+def _times(a: Poly, b: Poly, memo: dict) -> Poly:
+    # Refused before it is formed: a product of two large sums is where the work would go.
+    size = _terms(a) * _terms(b)
+    memo[_WORK] += size
+    if size > MAX_TERMS or memo[_WORK] > MAX_WORK:
+        raise _TooLarge
     out: Poly = {}
     for ma, ca in a.items():
         for mb, cb in b.items():
@@ -146,9 +186,13 @@ def _times(a: Poly, b: Poly) -> Poly:
 
 
 def _bounded(poly: Poly) -> Poly:
-    if sum(len(c) for c in poly.values()) > MAX_TERMS:
+    if _terms(poly) > MAX_TERMS:
         raise _TooLarge
     return poly
+
+
+def _terms(poly: Poly) -> int:
+    return sum(len(c) for c in poly.values())
 
 
 def _multiply(a: Monomial, b: Monomial) -> Monomial:
