@@ -148,9 +148,9 @@ def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:
     on the heading through a quotient that no identity removes. Along the
     wheel each row is a scalar that the heading cannot change, so the
     solved rates are free of it, as by hand. The horizontal part of the axle
-    fixes the directions; it is normalised where its length is a single
-    factor (a leaned wheel: cos of the lean) and left unnormalised otherwise,
-    which only scales a row. A sphere (no axle) keeps N's rows.
+    fixes the directions where its length is a single factor (a leaned
+    wheel: cos of the lean); otherwise, and for a sphere (no axle), N's rows
+    are kept.
     """
     if axle is None:
         return rows
@@ -160,6 +160,10 @@ def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:
         return rows
     if square.is_Pow and square.exp == 2:
         sideways = sideways / square.base
+    elif square != 1:
+        # No single factor (a steered and leaned wheel): dividing by the root
+        # would lengthen every row, and N's rows are kept.
+        return rows
     forward = sp.Matrix([sideways[1], -sideways[0], 0])  # sideways × up
     basis = sp.Matrix.hstack(forward, sideways, sp.Matrix([0, 0, 1])).T
     return (basis * rows).applyfunc(reduce)

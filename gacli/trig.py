@@ -28,7 +28,7 @@ import sympy as sp
 MAX_TERMS = 2_000
 # Terms formed in all the products of one reduction, past which it stops:
 # a large entry that would end unchanged must not cost much to find so.
-MAX_WORK = 6_000
+MAX_WORK = 2_000
 _WORK = object()  # the memo's key for the work done so far
 # A coefficient is multiplied out to see whether it cancels only below this many terms.
 COEFFICIENT_TERMS = 400
