@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.equations import Derivation
+from gacli import symbols as S
 from gacli.readable import TOO_LARGE, Tidy, displayable, show
 from gacli.symbols import rate_name
 
@@ -66,8 +67,10 @@ def equations(d: Derivation, tidy: Tidy) -> Section:
 
 
 def kinematic(d: Derivation, tidy: Tidy) -> Section:
-    lines = [f"{rate_name(n, 1)} = {show(tidy(e))}" for n, e in d.kinematic_equations]
-    return Section("Kinematic equations, eq. (14.20)", tuple(lines))
+    # q̇ = q̇ for an independent coordinate says nothing, and is not printed.
+    lines = [f"{rate_name(n, 1)} = {show(tidy(e))}" for n, e in d.kinematic_equations if e != S.rate(n)]
+    return Section("Kinematic equations, eq. (14.20)",
+                   tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",))
 
 
 def too_large() -> Section:
