@@ -49,6 +49,9 @@ def run_once(path: Path, fmt: str) -> float:
     from gacli.loading import load
     from gacli.report import derivation_report
 
+    from sympy.core.cache import clear_cache
+
+    clear_cache()  # each size as a fresh `gacli derive` would see it, not warmed by the smaller ones
     start = time.perf_counter()
     derivation = derive(load(path))
     if fmt == "text":
