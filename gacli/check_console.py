@@ -8,14 +8,13 @@ escaped, so a hostile file cannot restyle or clear the terminal.
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from rich import box
 from rich.table import Table
 from rich.text import Text
 
 from gacli import console
-from gacli.check import CheckReport, FileReport, printable
+from gacli.check import CheckReport, FileReport
+from gacli.console import printable
 
 _STATUS_STYLE = {"ok": "green", "warning": "yellow", "error": "bold red"}
 
@@ -23,8 +22,7 @@ _STATUS_STYLE = {"ok": "green", "warning": "yellow", "error": "bold red"}
 def show(report: CheckReport) -> None:
     """Diagnostics (stderr), then one table row per file and a summary line (stdout)."""
     for file in report.files:
-        console.diagnostics(replace(d, message=printable(d.message), hint=printable(d.hint),
-                                    where=printable(d.where)) for d in file.diagnostics)
+        console.diagnostics(file.diagnostics)  # escapes and shortens what the file wrote
     out = console.stdout()
     out.print(_table(report))
     out.print(_summary(report))
@@ -41,8 +39,8 @@ def _table(report: CheckReport) -> Table:
     for file in report.files:
         table.add_row(
             Text(printable(file.path)), _result(file, report.strict),
-            Text("" if file.k is None else str(file.k)), Text(", ".join(file.independent)),
-            Text("\n".join(f"{c.where}: {c.verdict}" for c in file.classifications)),
+            Text("" if file.k is None else str(file.k)), Text(printable(", ".join(file.independent))),
+            Text("\n".join(printable(f"{c.where}: {c.verdict}") for c in file.classifications)),
             Text(f"{file.elapsed:.1f} s"),
         )
     return table

@@ -36,6 +36,12 @@ METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 Method = enum.Enum("Method", {m: m for m in METHODS}, type=str)
 
 SystemPath = Annotated[Path, typer.Argument(help="A system file (YAML).", dir_okay=False, exists=True)]
+# The same budget as gacli check's --timeout (gacli.budget); the literals are
+# here so that --help does not import SymPy. A test checks they agree.
+DEFAULT_TIMEOUT = 300.0
+Timeout = Annotated[float, typer.Option(
+    "--timeout", min=0, help="Seconds allowed for the whole command, past which it stops with "
+    "'ran out of time in the step ...' (0: no limit).")]
 
 
 @contextlib.contextmanager
@@ -55,15 +61,40 @@ def _boundary():
 
         console.error(str(exc))
         raise typer.Exit(code=1) from None
+    except MemoryError:
+        # Outside a budget (which names the step), still one message, not a traceback.
+        from gacli import console
+
+        console.error("ran out of memory (the system is too large for this machine)")
+        raise typer.Exit(code=1) from None
 
 
-def _derive(path: Path):
+@contextlib.contextmanager
+def _budget(path: Path, seconds: float):
+    """The command's time and memory budget on ``path`` (gacli check's mechanism); yields the step recorder."""
+    from gacli.budget import budget
+
+    with budget(str(path), seconds) as state:
+        yield state
+
+
+def _derive(path: Path, state):
+    """Read, load and derive within the budget, telling it (and the spinner) each step."""
     from gacli import console
+    from gacli.budget import STEP_LOAD, STEP_READ
     from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.loading import load_source
+    from gacli.source import read_source
 
-    system = load(path)
-    with console.progress(f"deriving {path.name}") as step:
+    state(STEP_READ)
+    source = read_source(path)
+    state(STEP_LOAD)
+    system = load_source(source)
+    with console.progress(f"deriving {path.name}") as spinner:
+        def step(name: str) -> None:
+            state(name)
+            spinner(name)
+
         return derive(system, progress=step)
 
 
@@ -93,6 +124,7 @@ def derive(
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
+    timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Derive the Gibbs-Appell equations of a system and print them.
 
@@ -100,40 +132,52 @@ def derive(
     """
     from gacli import console
 
+    _derive_usage(format.value, output, steps, reactions)
     with _boundary():
-        derivation = _derive(file)
+        with _budget(file, timeout) as state:
+            derivation = _derive(file, state)
+            state(f"writing the {format.value} output")
+            if format.value == "text":
+                title, sections = _text_report(derivation, steps, reactions)
+            else:
+                from gacli.api import emit
+
+                options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {"reactions": reactions}
+                files = emit(derivation, format.value, **options)
+        # Printed once the work is done: running out of time never leaves half an output.
         if format.value == "text":
-            from gacli.report import derivation_report, steps_report
-
-            if output is not None:
-                raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
-            report = steps_report if steps else derivation_report
-            console.sections(derivation.system.title or derivation.system.name, report(derivation))
-            if reactions:
-                from gacli.report import reactions_report
-
-                console.sections("", reactions_report(derivation))
-            return
-        if reactions and format.value == "latex":
-            raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
-        if steps and format.value != "latex":
-            raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
-        from gacli.api import emit
-
-        options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {"reactions": reactions}
-        files = emit(derivation, format.value, **options)
-        if output is None:
+            console.sections(title, sections)
+        elif output is None:
             for _, text in sorted(files.items()):
                 console.raw(text)
-            return
-        from gacli.output import write_files
+        else:
+            from gacli.output import write_files
 
-        for path in write_files(files, output):
-            console.note(f"wrote {path}")
+            for path in write_files(files, output):
+                console.note(f"wrote {path}")
+
+
+def _derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
+    """Option combinations derive refuses, found before any work is done."""
+    if format == "text" and output is not None:
+        raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
+    if reactions and format == "latex":
+        raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
+    if steps and format not in ("text", "latex"):
+        raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
+
+
+def _text_report(derivation, steps: bool, reactions: bool):
+    from gacli.report import derivation_report, reactions_report, steps_report
+
+    sections = tuple((steps_report if steps else derivation_report)(derivation))
+    if reactions:
+        sections += tuple(reactions_report(derivation))
+    return derivation.system.title or derivation.system.name, sections
 
 
 @app.command()
-def gibbs(file: SystemPath) -> None:
+def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
     """Print the Gibbs function G (its acceleration terms, eqs. 14.17 and 14.21).
 
     Example: gacli gibbs systems/particle_in_plane.yaml
@@ -142,8 +186,11 @@ def gibbs(file: SystemPath) -> None:
     from gacli.report import gibbs_report
 
     with _boundary():
-        derivation = _derive(file)
-        console.sections("", gibbs_report(derivation))
+        with _budget(file, timeout) as state:
+            derivation = _derive(file, state)
+            state("writing the Gibbs function")
+            sections = tuple(gibbs_report(derivation))
+        console.sections("", sections)
 
 
 CHECK_FORMATS = ("text", "json", "github")
@@ -219,6 +266,7 @@ def simulate(
     plot: Annotated[Optional[Path], typer.Option(help="Draw to this .png or .svg file.")] = None,
     show: Annotated[Optional[str], typer.Option(help="States drawn against time, as x,y.")] = None,
     phase: Annotated[Optional[str], typer.Option(help="One state against another, as x,y.")] = None,
+    timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Integrate the equations of motion; report energy drift and constraint residuals.
 
@@ -236,9 +284,11 @@ def simulate(
             from gacli.simulate_plot import check
 
             check(plot)
-        derivation = _derive(file)
-        with simulate_console.progress(spec.t_end) as advance:
-            result = sim.simulate(derivation, spec, progress=advance)
+        with _budget(file, timeout) as state:
+            derivation = _derive(file, state)
+            state("simulating")
+            with simulate_console.progress(spec.t_end) as advance:
+                result = sim.simulate(derivation, spec, progress=advance)
         if csv is not None:
             from gacli.output import write_files
 
@@ -258,6 +308,7 @@ def linearize(
     set_: Annotated[Optional[str], typer.Option("--set", help='Parameter values over the file\'s, "g=9.81".')] = None,
     states: Annotated[Optional[str], typer.Option(help="Keep these states (rows and columns of A), as lean,steer,dot(lean).")] = None,
     symbolic: Annotated[bool, typer.Option(help="A and B as expressions (small systems).")] = False,
+    timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Linearize about an operating point: A, B and the eigenvalues of A.
 
@@ -265,20 +316,19 @@ def linearize(
     """
     from gacli import console
     from gacli import linearize as L
-    from gacli.simulate import parse_assignments
 
     with _boundary():
-        derivation = _derive(file)
+        with _budget(file, timeout) as state:
+            derivation = _derive(file, state)
+            state("linearizing")
+            if symbolic:
+                A, B = L.linearize_symbolic(derivation)
+                text = f"A = {A}\nB = {B}"
+            else:
+                result = _linearize_numeric(L, derivation, at, set_)
         if symbolic:
-            A, B = L.linearize_symbolic(derivation)
-            console.raw(f"A = {A}\nB = {B}")
+            console.raw(text)
             return
-        from gacli.emit.naming import parameter_defaults
-
-        defaults = parameter_defaults(derivation.system.parameters)
-        overrides = L.evaluate_assignments(parse_assignments(set_ or "", "--set"), defaults, "--set")
-        point = L.evaluate_assignments(parse_assignments(at or "", "--at"), {**defaults, **overrides}, "--at")
-        result = L.linearize(derivation, point, overrides)
         names = [n.strip() for n in states.split(",")] if states else list(result.state)
         A = result.block(names)
         lines = ["A ="] + L.format_matrix(A, names, names)
@@ -289,11 +339,22 @@ def linearize(
         console.raw("\n".join(lines))
 
 
+def _linearize_numeric(L, derivation, at: Optional[str], set_: Optional[str]):
+    from gacli.emit.naming import parameter_defaults
+    from gacli.simulate import parse_assignments
+
+    defaults = parameter_defaults(derivation.system.parameters)
+    overrides = L.evaluate_assignments(parse_assignments(set_ or "", "--set"), defaults, "--set")
+    point = L.evaluate_assignments(parse_assignments(at or "", "--at"), {**defaults, **overrides}, "--at")
+    return L.linearize(derivation, point, overrides)
+
+
 @app.command()
 def verify(
     file: SystemPath,
     samples: Annotated[int, typer.Option(min=1, help="Random admissible states to compare at.")] = 20,
     tol: Annotated[float, typer.Option(help="Largest relative difference allowed.")] = 1e-9,
+    timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Check the derivation by an independent route: eq. (14.10) over all rates, with multipliers.
 
@@ -302,12 +363,15 @@ def verify(
     from gacli import console
 
     with _boundary():
-        derivation = _derive(file)
         from gacli.verify import format_report
         from gacli.verify import verify as run_verify
 
-        report = run_verify(derivation.system, derivation, samples=samples, tol=tol)
-        console.raw("\n".join(format_report(report)))
+        with _budget(file, timeout) as state:
+            derivation = _derive(file, state)
+            state("verifying by the independent route (eq. 14.10)")
+            report = run_verify(derivation.system, derivation, samples=samples, tol=tol)
+            lines = format_report(report)
+        console.raw("\n".join(lines))
         if not report.passed:
             raise typer.Exit(code=1)
 

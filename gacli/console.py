@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 from collections.abc import Iterable, Iterator
 
 from rich.console import Console
@@ -31,29 +32,60 @@ def stderr() -> Console:
     return Console(stderr=True, highlight=False, width=_width(), soft_wrap=True)
 
 
-def printable(text: str) -> str:
-    """Control characters quoted from a file, shown escaped: a file must not drive the terminal."""
-    return "".join(c if c.isprintable() or c == " " else repr(c)[1:-1] for c in text)
+# Quoted file text in a message is cut to this many characters: a file that is
+# one 900 kB scalar, or a link to some other file, must not fill the terminal.
+MAX_QUOTED = 400
+
+
+def printable(text: str, keep: str = "") -> str:
+    """The one sanitizer for text that may come from a file, before it reaches a terminal.
+
+    Control characters, bidi overrides, zero-width characters, line
+    separators and lone surrogates (anything not ``str.isprintable``) are
+    shown as visible escapes (``\\x1b``, ``\\u202e``, ``\\ud800``): a file must
+    not drive the terminal, reorder what is shown, hide text, or make
+    printing fail with a UnicodeEncodeError. ``keep`` lists characters
+    (newline, tab) that generated source may contain as they are.
+    """
+    if text.isprintable():  # the usual case, at C speed
+        return text
+    if keep:
+        pattern = "(" + "|".join(re.escape(c) for c in keep) + ")"
+        return "".join(part if part in keep else printable(part) for part in re.split(pattern, text))
+    return "".join(c if c.isprintable() or c == " " else c.encode("unicode_escape").decode("ascii") for c in text)
+
+
+def shortened(text: str, limit: int = MAX_QUOTED) -> str:
+    """``text`` with its middle left out past ``limit`` characters (the end often says the most)."""
+    if len(text) <= limit:
+        return text
+    half = limit // 2
+    return f"{text[:half]}... ({len(text) - 2 * half} characters not shown) ...{text[-half:]}"
+
+
+def quoted(text: str) -> str:
+    """A message, place or hint that quotes a file: shortened, then made printable."""
+    return printable(shortened(text))
 
 
 def diagnostics(items: Iterable[Diagnostic]) -> None:
     console = stderr()
     for d in items:
         line = Text()
-        line.append(printable(str(d.location)), style="bold")
+        line.append(quoted(str(d.location)), style="bold")
         line.append(": ")
         line.append(f"{d.severity}:", style="bold red" if d.severity == "error" else "bold yellow")
-        line.append(f" {printable(d.where)}: " if d.where else " ")
-        line.append(printable(d.message))
+        line.append(f" {quoted(d.where)}: " if d.where else " ")
+        line.append(quoted(d.message))
         if d.hint:
-            line.append(f" ({printable(d.hint)})", style="cyan")
+            line.append(f" ({quoted(d.hint)})", style="cyan")
         console.print(line)
 
 
 def error(message: str) -> None:
     text = Text()
     text.append("error:", style="bold red")
-    text.append(f" {printable(message)}")
+    text.append(f" {quoted(message)}")
     stderr().print(text)
 
 
@@ -61,24 +93,30 @@ def sections(title: str, items) -> None:
     """Print report sections (gacli.report.Section) to stdout."""
     console = stdout()
     if title:
-        console.print(Text(title, style="bold"))
+        console.print(Text(printable(title), style="bold"))
     for section in items:
-        console.print(Text(f"\n{section.title}", style="bold cyan"))
+        console.print(Text(f"\n{printable(section.title)}", style="bold cyan"))
         for line in section.lines:
-            console.print(Text(f"  {line}"))
+            console.print(Text(f"  {printable(line)}"))
 
 
 def raw(text: str) -> None:
-    """Generated source to stdout, byte for byte (no wrapping, no markup)."""
+    """Generated source to stdout, as is but for characters that would drive the terminal.
+
+    No wrapping, no markup. File text inside the source (a title in a
+    comment) is escaped like every other line gacli prints; newlines and tabs
+    are the source's own.
+    """
     import sys
 
+    text = printable(text, keep="\n\t")
     sys.stdout.write(text)
     if not text.endswith("\n"):
         sys.stdout.write("\n")
 
 
 def note(message: str) -> None:
-    stderr().print(Text(message, style="dim"))
+    stderr().print(Text(printable(message), style="dim"))
 
 
 @contextlib.contextmanager

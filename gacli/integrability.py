@@ -307,6 +307,9 @@ def evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> tuple[mpmath.mp
     Raises:
         UndefinedValue: outside the real domain, too large, or not evaluable.
     """
+    if expr is sp.S.Zero:
+        # Most entries of a wide system's M are zero: its check evaluates all k² of them.
+        return mpmath.mpf(0), mpmath.mpf(0)
     with mpmath.workdps(_DIGITS):
         try:
             return _Evaluator(point).value(as_expr(expr))

@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterator
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
-from gacli.console import stderr, stdout
+from gacli.console import printable, stderr, stdout
 from gacli.simulate import Simulation, summary_lines
 
 
@@ -37,10 +37,10 @@ def summary(sim: Simulation) -> None:
     """The run and what it measured, one fact a line, to stdout."""
     console = stdout()
     lines = summary_lines(sim)
-    console.print(Text(lines[0], style="bold"))
+    console.print(Text(printable(lines[0]), style="bold"))  # the first line names the system
     for line in lines[1:]:
-        console.print(Text(f"  {line}"))
+        console.print(Text(f"  {printable(line)}"))
 
 
 def wrote(path) -> None:
-    stderr().print(Text(f"wrote {path}", style="dim"))
+    stderr().print(Text(printable(f"wrote {path}"), style="dim"))

@@ -36,6 +36,11 @@ from gacli.errors import Diagnostic, Location, SystemFileError
 MAX_FILE_BYTES = 1_000_000
 MAX_DEPTH = 32
 MAX_NODES = 100_000
+# Characters of scalar text once every alias is expanded. Loading costs time
+# in proportion to this, not to the file's size: 30,000 aliases of one 2 KB
+# expression are a 150 kB file that reads as 60 MB of expressions. Twice the
+# largest file leaves room for anchors used as intended.
+MAX_EXPANDED_CHARS = 2 * MAX_FILE_BYTES
 
 # Tags of plain data; any other tag (``!!python/...``, ``!custom``) is refused.
 _SCALAR_TAGS = {
@@ -218,7 +223,9 @@ class _Converter:
     """Walks the composed node graph once, bounding depth and total size.
 
     Aliases make the graph a DAG whose tree expansion can be exponential
-    ("billion laughs"), so the walk counts every node it visits.
+    ("billion laughs"), so the walk counts every node it visits and the
+    characters of every scalar it visits: what later steps read is the
+    expansion, so that is what is bounded.
     """
 
     def __init__(self, path: str, text: str, libyaml: bool = False) -> None:
@@ -226,6 +233,7 @@ class _Converter:
         self.text = text
         self.libyaml = libyaml
         self.count = 0
+        self.chars = 0
 
     def convert(self, node: yaml.Node, depth: int) -> Node:
         self.count += 1
@@ -248,6 +256,11 @@ class _Converter:
             # next token, by PyYAML after the ':'; only PyYAML's place is known.
             raise _NotLikePyYAML
         line, col = node.start_mark.line + 1, node.start_mark.column + 1
+        self.chars += len(node.value)
+        if self.chars > MAX_EXPANDED_CHARS:
+            raise _fail(self.path, f"the YAML expands to more than {MAX_EXPANDED_CHARS} characters of text "
+                        f"(aliases repeat {len(node.value)} characters here; the file has {len(self.text)})",
+                        line, col)
         kind = _SCALAR_TAGS.get(node.tag)
         if kind is None:
             raise _fail(self.path, f"YAML tag '{node.tag}' is not allowed in a system file", line, col)

@@ -1,0 +1,74 @@
+"""The resource budget of one command on one file, shared by every command.
+
+``gacli check`` stops a runaway file with a wall-clock budget (the SIGALRM
+:func:`gacli.integrability.time_limit`, main thread only). Every other
+command (derive, gibbs, verify, linearize, simulate) uses the same limit
+through :func:`budget`, so that a file which makes SymPy work forever ends
+in one located message naming the step that was running, never a hang or
+a traceback. Running out of memory is reported the same way.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Iterator
+
+from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
+from gacli.integrability import time_limit
+
+DEFAULT_TIMEOUT = 300.0
+TIMEOUT_HELP = "Seconds allowed for the whole command (0: no limit)."
+
+# The same step names as gacli check's (gacli.check.STEP_READ, STEP_LOAD).
+STEP_READ = "reading the file"
+STEP_LOAD = "loading the declarations and expressions"
+
+
+class _OutOfTime(DerivationError):
+    """Raised by the alarm inside the work; turned into a located error on the way out."""
+
+
+class Budget:
+    """Remembers the running step (it is derive's progress callback) and whether time ran out."""
+
+    def __init__(self, path: str, seconds: float | None) -> None:
+        self.path = path
+        self.seconds = seconds
+        self.step = STEP_READ
+        self.expired = False
+
+    def __call__(self, step: str) -> None:
+        self.step = step
+
+    def _alarm(self) -> _OutOfTime:
+        self.expired = True
+        return _OutOfTime(self.message())
+
+    def message(self) -> str:
+        return (f"ran out of time in the step '{self.step}' "
+                f"(the budget is {self.seconds:g} s; raise it with --timeout)")
+
+    def error(self, message: str) -> SystemFileError:
+        # Line 1, column 1: the whole file is at fault, not one entry of it.
+        return SystemFileError([Diagnostic(Location(self.path, 1, 1), message)])
+
+
+@contextlib.contextmanager
+def budget(path: str, seconds: float | None) -> Iterator[Budget]:
+    """Run the block within ``seconds`` (None or 0: no limit); yields the step recorder.
+
+    Past the budget, or out of memory, the block ends with a SystemFileError
+    located at the file and naming the step. A library that catches the
+    alarm's error and raises its own is recognised by the ``expired`` flag.
+    """
+    state = Budget(path, seconds)
+    try:
+        with time_limit(seconds or 0, state._alarm):
+            yield state
+    except MemoryError:
+        # The frames that held the memory are gone by now: a message can be made.
+        raise state.error(f"ran out of memory in the step '{state.step}'") from None
+    except Exception:
+        if state.expired:
+            raise state.error(state.message()) from None
+        raise
