@@ -15,7 +15,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.equations import Derivation
-from gacli.gibbs import acceleration_chain
+from gacli.gibbs import acceleration_chain, gibbs_entries
 from gacli.readable import STEP_BUDGET_OPS, Tidy
 
 
@@ -132,37 +132,13 @@ def gibbs_polynomial(d: Derivation, tidy: Tidy) -> sp.Expr:
     Only the nonzero coefficients are visited and the sum is made once:
     adding k² terms one by one to a growing sum cost time ~k³ on wide systems.
     """
-    H, g = sparse_gibbs_coefficients(d.gibbs, d.speed_rates)
+    H, g = gibbs_entries(d.gibbs, d.speed_rates)
     acc = d.speed_rates
     terms = []
     for (i, j), h in sorted(H.items()):
         terms.append(tidy(h / 2) * acc[i] ** 2 if i == j else tidy(h) * acc[i] * acc[j])
     terms += [tidy(c) * acc[i] for i, c in sorted(g.items())]
     return sp.Add(*terms)
-
-
-def sparse_gibbs_coefficients(G: sp.Expr, acc) -> tuple[dict[tuple[int, int], sp.Expr], dict[int, sp.Expr]]:
-    """gacli.gibbs.gibbs_coefficients as nonzero entries: H by (i, j) with i <= j, g by i.
-
-    Each term of G is differentiated only by the accelerations it contains:
-    differentiating the whole of G by every pair cost time ~k² times the
-    size of G (n³ for n uncoupled particles). The sum of the terms'
-    derivatives is the derivative of the sum, so the entries are the same.
-    """
-    index = {a: i for i, a in enumerate(acc)}
-    zero = {a: 0 for a in acc}
-    h_parts: dict[tuple[int, int], list] = {}
-    g_parts: dict[int, list] = {}
-    for term in sp.Add.make_args(G):
-        present = sorted((index[s] for s in term.free_symbols if s in index))
-        for i in present:
-            first = sp.diff(term, acc[i])
-            g_parts.setdefault(i, []).append(first.xreplace(zero))
-            for j in present[present.index(i):]:
-                h_parts.setdefault((i, j), []).append(sp.diff(first, acc[j]))
-    H = {key: total for key, parts in h_parts.items() if (total := sp.Add(*parts)) != 0}
-    g = {i: total for i, parts in g_parts.items() if (total := sp.Add(*parts)) != 0}
-    return H, g
 
 
 def virtual_work(d: Derivation, tidy: Tidy) -> Step:
@@ -189,8 +165,13 @@ def virtual_work(d: Derivation, tidy: Tidy) -> Step:
 def equations_of_motion(d: Derivation, tidy: Tidy) -> Step:
     items: list[str | Equation] = ["∂G/∂u̇_s = Q_s (eq. 14.19):"]
     items += [equation_of_motion(d, s, tidy) for s in range(d.k)]
-    items.append("with the kinematic equations (eq. 14.20):")
-    items += [Equation(S.rate(n), tidy(e), "14.20") for n, e in d.kinematic_equations]
+    # q̇ = q̇ for an independent coordinate says nothing, and is not printed.
+    kinematic = [Equation(S.rate(n), tidy(e), "14.20") for n, e in d.kinematic_equations if e != S.rate(n)]
+    if kinematic:
+        items.append("with the kinematic equations (eq. 14.20):")
+        items += kinematic
+    else:
+        items.append("Every coordinate is independent: the kinematic equations (14.20) say only q̇ = q̇.")
     return Step("Step 4. Equations of motion", tuple(items))
 
 
