@@ -253,8 +253,12 @@ class _Terms:
         rows = P.tolist()  # plain lists: matrix indexing is slow
         C = C.tolist() if isinstance(C, sp.MatrixBase) else C
         nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
-        for i in range(P.cols):
-            for j in range(i + 1 if lower_only else P.cols):
+        # Only the columns this body moves: a particle of a wide system has one of k.
+        moved = [i for i in range(P.cols) if nonzero[i]]
+        for i in moved:
+            for j in moved:
+                if lower_only and j > i:
+                    break
                 groups = entries.setdefault((i, j), {})
                 for a, p_ai in nonzero[i]:
                     for b, p_bj in nonzero[j]:

@@ -15,7 +15,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
-from gacli.kinematics import BodyMotion, Rates, point_partials, product_rows
+from gacli.kinematics import BodyMotion, Rates, point_partials, product, product_rows
 from gacli.model import System
 from gacli.trig import reduce as pythagorean
 
@@ -38,7 +38,9 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
 
 def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:
     """F·V_s of each force, one list per force."""
-    return [list(point_partials(force.point, system, rates).T * sp.Matrix(force.vector)) for force in system.forces]
+    # Vᵀ F by kinematics.product, which skips zeros: a force on one particle of many touches one Q_s.
+    return [list(product(point_partials(force.point, system, rates).T, sp.Matrix(force.vector)))
+            for force in system.forces]
 
 
 def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> list[list[sp.Expr]]:

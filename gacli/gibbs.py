@@ -12,7 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.kinematics import BodyMotion, Rates, configuration_chain
+from gacli.kinematics import BodyMotion, Rates, configuration_chain, product
 from gacli.model import System
 from gacli.trig import reduce as pythagorean
 
@@ -31,10 +31,8 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
     from the split V u̇ + a_rest), so G checks the direct route.
     """
     chain = acceleration_chain(system, rates)
-    G = sp.S.Zero
-    for motion in motions:
-        # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
-        G += pythagorean(_body_gibbs(motion, rates, chain))
+    # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
+    G = sp.Add(*[pythagorean(_body_gibbs(motion, rates, chain)) for motion in motions])
     if whole:
         return G
     return G - G.xreplace({a: 0 for a in rates.speed_rates})
@@ -42,12 +40,13 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
 
 def _body_gibbs(motion: BodyMotion, rates: Rates, chain) -> sp.Expr:
     u = sp.Matrix(rates.speeds)
-    v = motion.linear.partials * u + motion.linear.velocity0
+    # kinematics.product skips the zero columns: a body of a wide system moves few of the k speeds.
+    v = product(motion.linear.partials, u) + motion.linear.velocity0
     a = v.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:
         I = motion.body.inertia
-        w = motion.angular.partials * u + motion.angular.velocity0
+        w = product(motion.angular.partials, u) + motion.angular.velocity0
         alpha = w.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
         G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
     return G

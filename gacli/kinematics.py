@@ -10,6 +10,7 @@ acceleration V u̇ + a_rest (eq. 14.14), where V holds the partial velocities
 
 from __future__ import annotations
 
+import functools
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -32,6 +33,9 @@ _SEED = 20261122
 _RANK_TOL = 1e-9
 
 
+_ZERO = sp.S.Zero
+
+
 @dataclass(frozen=True)
 class Rates:
     """ṙ = β u + β₀ for every coordinate and quasi-coordinate (eq. 14.7)."""
@@ -49,27 +53,31 @@ class Rates:
     def k(self) -> int:
         return len(self.independent)
 
-    @property
+    @cached_property  # asked for by every body: once, not k symbols each time
     def speeds(self) -> tuple[sp.Symbol, ...]:
         """The independent rates u."""
         return tuple(S.rate(n) for n in self.independent)
 
-    @property
+    @cached_property
     def speed_rates(self) -> tuple[sp.Symbol, ...]:
         """Their time derivatives u̇."""
         return tuple(S.rate(n, 2) for n in self.independent)
 
     def rate(self, name: str) -> sp.Expr:
-        i = self.names.index(name)
+        i = self._index[name]
         return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if b != 0], self._beta0_column[i])
 
     def row_lists(self, names) -> tuple[list[tuple[sp.Expr, ...]], list[tuple[sp.Expr]]]:
         """The rows of β and β₀ for ``names``, for the list arithmetic of :func:`product_rows`."""
-        idx = [self.names.index(n) for n in names]
+        idx = [self._index[n] for n in names]
         return [self._beta_rows[i] for i in idx], [(self._beta0_column[i],) for i in idx]
 
     # Tuples, computed once: indexing a SymPy matrix entry by entry costs more than
     # the arithmetic done with the entries, and callers share them.
+    @cached_property
+    def _index(self) -> dict[str, int]:
+        return {n: i for i, n in enumerate(self.names)}
+
     @cached_property
     def _beta_rows(self) -> tuple[tuple[sp.Expr, ...], ...]:
         return tuple(tuple(row) for row in self.beta.tolist())
@@ -429,9 +437,30 @@ def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
 
 def product_rows(rows: Sequence[Sequence[sp.Expr]], b: Sequence[Sequence[sp.Expr]],
                  columns: int) -> list[list[sp.Expr]]:
-    """:func:`product` on lists of rows; B has ``columns`` columns (its rows may be none)."""
-    nonzero = [[(r, b_r[j]) for r, b_r in enumerate(b) if b_r[j] != 0] for j in range(columns)]
-    return [[_dot(row, column) for column in nonzero] for row in rows]
+    """:func:`product` on lists of rows; B has ``columns`` columns (its rows may be none).
+
+    Sparse on both sides: a particle's row of the Jacobian has one nonzero
+    entry and each row of β a few, so the work is the nonzero products,
+    not rows × columns × the length of B (cubic in the width of a system of
+    n uncoupled bodies, where every body's product scanned all of β).
+    """
+    out = []
+    for row in rows:
+        terms: dict[int, list[sp.Expr]] = {}
+        for r, a in enumerate(row):
+            if a is _ZERO or a == 0:
+                continue
+            for j, v in _nonzero(tuple(b[r])):
+                terms.setdefault(j, []).append(a if v is sp.S.One else a * v)
+        out.append([(t[0] if len(t) == 1 else sp.Add(*t)) if (t := terms.get(j)) else _ZERO
+                    for j in range(columns)])
+    return out
+
+
+@functools.lru_cache(maxsize=65_536)
+def _nonzero(row: tuple[sp.Expr, ...]) -> tuple[tuple[int, sp.Expr], ...]:
+    """(column, entry) of a row's nonzero entries; β's rows recur for every body."""
+    return tuple((j, v) for j, v in enumerate(row) if v is not _ZERO and v != 0)
 
 
 def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:

@@ -210,6 +210,9 @@ def print_block(printer_class, names: Mapping[sp.Symbol, str],
     printer = printer_class({**names, **{sym: sym.name for sym, _ in replacements}})
     where = functools.partial(locate, equations=equations)
     temporaries = tuple((sym.name, print_code(printer, value, where)) for sym, value in replacements)
-    results = tuple(print_code(printer, expr, where) for expr in reduced)
+    # Each distinct result printed once: a wide system's M is mostly zeros.
+    printed: dict[sp.Expr, str] = {}
+    results = tuple(printed[e] if e in printed else printed.setdefault(e, print_code(printer, e, where))
+                    for e in reduced)
     symbols = frozenset(free_symbols(exprs))
     return Block(temporaries, results, symbols), printer
