@@ -29,6 +29,7 @@ import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.budget import STEP_LOAD, STEP_READ  # one name for each step, shared with every command
 from gacli.equations import Derivation, derive
 from gacli.errors import (
     DerivationError,
@@ -50,6 +51,7 @@ from gacli.loading import load_source
 from gacli.model import System
 from gacli.graph import free_symbols, postorder
 from gacli.source import read_source
+from gacli.textsafe import printable, shortened
 
 DEFAULT_TIMEOUT = 60.0
 SUFFIXES = (".yaml", ".yml")
@@ -57,8 +59,6 @@ MAX_DIAGNOSTICS = 100  # per file; a file can hold thousands of errors (aliases)
 PD_SAMPLES = 3
 JSON_VERSION = 1
 
-STEP_READ = "reading the file"
-STEP_LOAD = "loading the declarations and expressions"
 STEP_CLASSIFY = "classifying constraints and quasi-coordinates (Frobenius)"
 STEP_MASS = "checking M (symmetric, positive definite)"
 
@@ -470,12 +470,6 @@ def check_paths(
 
 # -- renderers -------------------------------------------------------------------
 
-def printable(text: str) -> str:
-    """Text safe for a terminal or a log: control characters become escapes."""
-    return "".join(ch if ch.isprintable() or ch == " " else ch.encode("unicode_escape").decode("ascii")
-                   for ch in text)
-
-
 def to_json(report: CheckReport) -> str:
     """The report as JSON (sorted keys, stable layout), for machines."""
     files = [_file_json(f, report.strict) for f in report.files]
@@ -508,8 +502,10 @@ def _file_json(report: FileReport, strict: bool) -> dict:
 
 
 def _diagnostic_json(d: Diagnostic) -> dict:
+    # Quotes of file text kept short here too: a 900 kB scalar must not become one JSON string.
     return {"path": d.location.path, "line": d.location.line, "column": d.location.column,
-            "severity": d.severity, "where": d.where, "message": d.message, "hint": d.hint}
+            "severity": d.severity, "where": shortened(d.where), "message": shortened(d.message),
+            "hint": shortened(d.hint)}
 
 
 def to_github(report: CheckReport) -> str:
@@ -526,7 +522,7 @@ def to_github(report: CheckReport) -> str:
 
 
 def _gh_data(text: str) -> str:
-    return printable(text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
+    return printable(shortened(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
 
 
 def _gh_property(text: str) -> str:

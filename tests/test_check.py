@@ -383,3 +383,16 @@ def test_a_mutated_system_file_never_crashes(text, scratch):
     assert result.exit_code in (0, 1), result.output
     if result.exit_code == 1:
         assert re.search(rf"^{re.escape(str(scratch))}:\d+:\d+: error: ", result.stderr, re.MULTILINE), result.output
+
+
+def test_machine_formats_quote_file_text_shortly_and_escaped():
+    """JSON and GitHub annotations carry a message that quotes a huge scalar only in part, with no raw ESC."""
+    from gacli.check import to_github, to_json
+    from gacli.errors import Diagnostic, Location
+
+    message = "bad value '" + "\x1b]0;pwned\x07" + "x" * 900_000 + "'"
+    diagnostic = Diagnostic(Location("f.yaml", 1, 1), message, "title")
+    report = CheckReport((FileReport(path="f.yaml", diagnostics=(diagnostic,)),), strict=False)
+    for text in (to_json(report), to_github(report)):
+        assert len(text) < 5_000
+        assert "\x1b" not in text and "\x07" not in text
