@@ -16,6 +16,7 @@ import pytest
 from conftest import SYSTEMS, derived
 from gacli.emit.c import emit_c
 from gacli.emit.naming import layout
+from gacli.equations import derive
 from test_emit_python import EXTRA, extra
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
@@ -210,3 +211,38 @@ def test_readme_main_compiles_and_runs(tmp_path):
                     "build/sphere_on_turntable.c", "-lm", "-o", "sphere"], cwd=tmp_path, check=True)
     out = subprocess.run([str(tmp_path / "sphere")], capture_output=True, text=True, check=True).stdout
     assert out.startswith("x = ")
+
+
+MACRO_NAMED = """\
+gacli: 1
+name: macro_named
+parameters: [MAXFLOAT, HUGE, M_PIl, M_El, FP_INT_UPWARD, FP_NAN, sinf, cospi, fminimum, float, len, I]
+coordinates: [x]
+bodies: {b: {mass: MAXFLOAT + len, position: [x, 0, 0]}}
+potential: HUGE*x**2 + M_PIl*x + FP_INT_UPWARD*M_El*I*x + FP_NAN*sinf*cospi*fminimum*float*x
+"""
+
+
+@pytest.mark.parametrize("flags", [["-std=c99"], ["-std=gnu11", "-D_GNU_SOURCE"], ["-std=c2x", "-D_GNU_SOURCE"]])
+@pytest.mark.parametrize("compiler", COMPILERS)
+def test_names_that_math_h_defines_are_renamed(compiler, flags, tmp_path):
+    """<math.h> under _GNU_SOURCE or C23 defines HUGE, MAXFLOAT, M_PIl, FP_INT_UPWARD... as macros."""
+    from gacli.loading import loads
+
+    d = derive(loads(MACRO_NAMED))
+    source = write_c(d, tmp_path)
+    command = [need(compiler), *flags, "-Wall", "-Wextra", "-Werror", "-pedantic", "-c", str(source),
+               "-o", str(tmp_path / "out.o")]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 0 and not result.stderr, result.stderr
+    header = (tmp_path / "macro_named.h").read_text()
+    assert "MACRO_NAMED_P_M_PIL" in header and "MACRO_NAMED_P_HUGE" in header  # the file's own names
+
+
+def test_math_h_names():
+    from gacli.emit.math_h import is_math_h_name
+
+    for name in ("HUGE", "MAXFLOAT", "M_PIl", "FP_INT_UPWARD", "sinf", "cosf128", "sinpi", "sinpif", "fabsl"):
+        assert is_math_h_name(name), name
+    for name in ("x", "theta", "m_c", "phi_L", "yaw", "spin", "lean", "Omega"):
+        assert not is_math_h_name(name), name

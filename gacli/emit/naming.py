@@ -60,6 +60,7 @@ Example:
 
 from __future__ import annotations
 
+import builtins
 import keyword
 import math
 import os
@@ -72,6 +73,7 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.coerce import as_expr
 from gacli.equations import Derivation
+from gacli.emit.math_h import RESERVED_PREFIXES, is_math_h_name
 from gacli.errors import EmitError
 
 # The names the generated functions and modules use themselves.
@@ -106,7 +108,26 @@ MATH_H_NAMES = frozenset("""
     M_2_SQRTPI M_SQRT2 M_SQRT1_2
 """.split())
 
-RESERVED = GENERATED_NAMES | C_KEYWORDS | MATH_H_NAMES | frozenset(keyword.kwlist)
+class ReservedNames:
+    """A set of names plus everything <math.h> may declare (:func:`gacli.emit.math_h.is_math_h_name`)."""
+
+    def __init__(self, names) -> None:
+        self.names = frozenset(names)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.names or (isinstance(name, str) and is_math_h_name(name))
+
+    def __or__(self, other) -> "ReservedNames":
+        return ReservedNames(self.names | frozenset(other))
+
+    def made(self, name: str) -> bool:
+        """Whether a name gacli made (``M_``, ``x_2``) is taken: families reserved by prefix do not count."""
+        return name in self.names or is_math_h_name(name, prefixes=False)
+
+
+# Python's builtins too: a local `min` or `float` would hide one the module may call.
+RESERVED = ReservedNames(GENERATED_NAMES | C_KEYWORDS | MATH_H_NAMES | frozenset(keyword.kwlist)
+                         | frozenset(n for n in dir(builtins) if not n.startswith("_")))
 
 # Generated function names, after "<name>_"; the C source calls the last one.
 C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "reactions", "lu_solve", "cholesky_solve")
@@ -283,11 +304,14 @@ def _macro_suffix(name: str) -> str:
     return re.sub(r"_+", "_", _stem(name)).strip("_").upper()
 
 
-def _fresh(stem: str, taken: set[str], reserved: frozenset[str]) -> str:
-    candidate = stem + "_" if stem in reserved else stem
+def _fresh(stem: str, taken: set[str], reserved: ReservedNames | frozenset[str]) -> str:
+    # A whole family is reserved by its prefix (M_PIl, FP_NAN): a suffix cannot leave it, a prefix can.
+    base = "v_" + stem if isinstance(reserved, ReservedNames) and stem.startswith(RESERVED_PREFIXES) else stem
+    candidate = base + "_" if base in reserved else base
+    made = reserved.made if isinstance(reserved, ReservedNames) else reserved.__contains__
     number = 2
-    while candidate in taken or candidate in reserved:
-        candidate = f"{stem}_{number}"
+    while candidate in taken or (made(candidate) if candidate != stem else candidate in reserved):
+        candidate = f"{base}_{number}"
         number += 1
     taken.add(candidate)
     return candidate
@@ -312,7 +336,7 @@ def _c_names(system: str, prefix: str, groups: Mapping[str, list]) -> frozenset[
     return frozenset(fixed | functions | macros)
 
 
-def _name_entries(groups: Mapping[str, list], prefix: str, reserved: frozenset[str]) -> dict[str, tuple[Entry, ...]]:
+def _name_entries(groups: Mapping[str, list], prefix: str, reserved: ReservedNames) -> dict[str, tuple[Entry, ...]]:
     macros = _macros(groups, prefix)
     taken: set[str] = set()
     entries = {}
