@@ -10,7 +10,6 @@ acceleration V u̇ + a_rest (eq. 14.14), where V holds the partial velocities
 
 from __future__ import annotations
 
-import functools
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -445,22 +444,19 @@ def product_rows(rows: Sequence[Sequence[sp.Expr]], b: Sequence[Sequence[sp.Expr
     n uncoupled bodies, where every body's product scanned all of β).
     """
     out = []
-    for row in rows:
+    sparse: dict[int, list[tuple[int, sp.Expr]]] = {}  # per call: a cache across derivations would
+    for row in rows:                                   # compare equal huge expressions node by node
         terms: dict[int, list[sp.Expr]] = {}
         for r, a in enumerate(row):
             if a is _ZERO or a == 0:
                 continue
-            for j, v in _nonzero(tuple(b[r])):
+            if r not in sparse:
+                sparse[r] = [(j, v) for j, v in enumerate(b[r]) if v is not _ZERO and v != 0]
+            for j, v in sparse[r]:
                 terms.setdefault(j, []).append(a if v is sp.S.One else a * v)
         out.append([(t[0] if len(t) == 1 else sp.Add(*t)) if (t := terms.get(j)) else _ZERO
                     for j in range(columns)])
     return out
-
-
-@functools.lru_cache(maxsize=65_536)
-def _nonzero(row: tuple[sp.Expr, ...]) -> tuple[tuple[int, sp.Expr], ...]:
-    """(column, entry) of a row's nonzero entries; β's rows recur for every body."""
-    return tuple((j, v) for j, v in enumerate(row) if v is not _ZERO and v != 0)
 
 
 def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
