@@ -144,7 +144,7 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     step("generalized forces (14.13)")
     Q = generalized_forces(system, rates, motions)
     step("Gibbs-Appell equations (14.19)")
-    M, F = _mass_matrix_and_forcing(motions, rates, Q)
+    M, F = _mass_matrix_and_forcing(motions, rates, Q, system.uses_frames)
     kinematic = tuple((c.name, rates.rate(c.name)) for c in system.coordinates)
     return Derivation(
         system=system, rates=rates, motions=motions, mass_matrix=M, forcing=F,
@@ -152,8 +152,8 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     )
 
 
-def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
-                             Q: sp.ImmutableMatrix) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
+def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates, Q: sp.ImmutableMatrix,
+                             frames: bool = True) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
     """M and F = Q − (the u̇-free part of ∂G/∂u̇) (eq. 14.19 without expanding G).
 
     Each entry is collected as a list of terms and summed once: adding whole
@@ -187,7 +187,10 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates,
         M[i][j] = _reduced(_sum_grouped(groups), groups)
         if symmetric:
             M[j][i] = M[i][j]
-    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups) for s, groups in enumerate(rest_terms)]
+    # A format-1 file's F stays as its author's positions give it (the display reduces it):
+    # reducing it there lengthened the generated code of a chain of bodies after CSE.
+    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups) if frames else sp.Add(Q[s], _sum_grouped(groups, -1))
+         for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
 

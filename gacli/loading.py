@@ -155,6 +155,7 @@ class _Builder:
             independent_location=self.where_of(self.decl.independent_node) if self.decl.independent_node else Location(self.source.path, 1, 1),
             bodies=bodies, forces=forces, torques=torques, work=work,
             potential=potential if potential is not None else sp.S.Zero,
+            uses_frames=bool(self.decl.frames or self.decl.points or self.decl.rolling),
         )
 
     def _check_names(self) -> None:

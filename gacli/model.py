@@ -145,6 +145,10 @@ class System:
     torques: tuple[Torque, ...]
     work: Form | None
     potential: sp.Expr
+    # Written with frames, points or rolling (docs/frames.md): positions come
+    # through products of direction cosines, and M and F are reduced by
+    # sin² + cos² = 1 as they are formed (docs/readable.md).
+    uses_frames: bool = False
 
     @property
     def rate_names(self) -> tuple[str, ...]:
