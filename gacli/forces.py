@@ -32,8 +32,9 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     Q = [sp.Add(*t) for t in terms]
     substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
     Q = substitute(Q, substitution) if substitution else Q
-    # A torque carried through a chain of frames gives T·sin² + T·cos² − T.
-    return sp.ImmutableMatrix(rates.k, 1, [pythagorean(e) for e in Q])
+    # A torque carried through a chain of frames gives T·sin² + T·cos² − T; a format-1
+    # file's loads are as its author wrote them (the display still reduces them).
+    return sp.ImmutableMatrix(rates.k, 1, [pythagorean(e) for e in Q] if system.uses_frames else Q)
 
 
 def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:
