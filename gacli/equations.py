@@ -302,13 +302,6 @@ def _reduced(entry: sp.Expr, groups: dict) -> sp.Expr:
     sum is in normal form too.
     """
     for key, (powers, _) in groups.items():
-        if powers is None or any(_may_square(base, exp) for base, exp in powers.items()):
+        if powers is None or trig.monomial_may_square(powers):
             return trig.reduce(entry)
     return entry
-
-
-def _may_square(base: sp.Expr, exp: sp.Expr) -> bool:
-    if isinstance(base, (sp.sin, sp.cos)):
-        return not exp.is_Integer or exp >= 2 or exp < 0
-    return not (base.is_Symbol or base.is_Number)
-

@@ -13,11 +13,11 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
+from gacli import trig
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
 from gacli.kinematics import BodyMotion, Rates, point_partials, product, product_rows
 from gacli.model import System
-from gacli.trig import reduce as pythagorean
 
 
 def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, ...]) -> sp.ImmutableMatrix:
@@ -34,7 +34,7 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
     Q = substitute(Q, substitution) if substitution else Q
     # A torque carried through a chain of frames gives T·sin² + T·cos² − T; a format-1
     # file's loads are as its author wrote them (the display still reduces them).
-    return sp.ImmutableMatrix(rates.k, 1, [pythagorean(e) for e in Q] if system.uses_frames else Q)
+    return sp.ImmutableMatrix(rates.k, 1, [trig.reduce(e) for e in Q] if system.uses_frames else Q)
 
 
 def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:

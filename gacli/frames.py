@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.trig import reduce
+from gacli import trig
 
 AXES = {"x": 0, "y": 1, "z": 2}
 _ZERO = sp.S.Zero
@@ -155,7 +155,7 @@ def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:
     if axle is None:
         return rows
     sideways = sp.Matrix([axle[0], axle[1], 0])
-    square = reduce(axle[0] ** 2 + axle[1] ** 2)
+    square = trig.reduce(axle[0] ** 2 + axle[1] ** 2)
     if square == 0:
         return rows
     if square.is_Pow and square.exp == 2:
@@ -166,7 +166,7 @@ def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:
         return rows
     forward = sp.Matrix([sideways[1], -sideways[0], 0])  # sideways × up
     basis = sp.Matrix.hstack(forward, sideways, sp.Matrix([0, 0, 1])).T
-    return (basis * rows).applyfunc(reduce)
+    return (basis * rows).applyfunc(trig.reduce)
 
 
 def rolling_rows(centre_form: sp.Matrix, omega_form: sp.Matrix, offset: sp.Matrix,

@@ -12,9 +12,9 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
+from gacli import trig
 from gacli.kinematics import BodyMotion, Rates, configuration_chain, product
 from gacli.model import System
-from gacli.trig import reduce as pythagorean
 
 
 def acceleration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr]:
@@ -32,7 +32,7 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
     """
     chain = acceleration_chain(system, rates)
     # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
-    G = sp.Add(*[pythagorean(_body_gibbs(motion, rates, chain)) for motion in motions])
+    G = sp.Add(*[trig.reduce(_body_gibbs(motion, rates, chain)) for motion in motions])
     if whole:
         return G
     return G - G.xreplace({a: 0 for a in rates.speed_rates})
@@ -42,12 +42,12 @@ def _body_gibbs(motion: BodyMotion, rates: Rates, chain) -> sp.Expr:
     u = sp.Matrix(rates.speeds)
     # kinematics.product skips the zero columns: a body of a wide system moves few of the k speeds.
     v = product(motion.linear.partials, u) + motion.linear.velocity0
-    a = v.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
+    a = v.applyfunc(lambda e: trig.reduce(S.time_derivative(e, chain)))
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:
         I = motion.body.inertia
         w = product(motion.angular.partials, u) + motion.angular.velocity0
-        alpha = w.applyfunc(lambda e: pythagorean(S.time_derivative(e, chain)))
+        alpha = w.applyfunc(lambda e: trig.reduce(S.time_derivative(e, chain)))
         G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
     return G
 

@@ -19,11 +19,11 @@ import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
+from gacli import trig
 from gacli.errors import Diagnostic, SystemFileError
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.model import Body, Form, System
-from gacli.trig import reduce as pythagorean
 
 # Ranks are decided at a random configuration: a generic rank of a matrix of
 # functions equals its rank at almost every point. Fixed seed: same answer
@@ -266,13 +266,13 @@ def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
     minor = _minors(A)
     everything = tuple(range(A.rows))
     # Reduced by sin² + cos² = 1: a sleigh's determinant is sin(θ)² + cos(θ)², which is 1.
-    det = pythagorean(minor(everything, everything))
+    det = trig.reduce(minor(everything, everything))
 
     def entry(i: int, c: int) -> sp.Expr:
         # (adj A)_ij = (-1)^(i+j) det(A without row j and column i)
         terms = [(-1) ** (i + j) * minor(_without(everything, j), _without(everything, i)) * B[j, c]
                  for j in range(A.rows) if B[j, c] != 0]
-        return pythagorean(sp.Add(*terms)) / det
+        return trig.reduce(sp.Add(*terms)) / det
 
     return sp.Matrix(A.rows, B.cols, entry)
 

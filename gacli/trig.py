@@ -17,8 +17,6 @@ distribution would exceed :data:`MAX_TERMS` terms is returned unchanged.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-
 import sympy as sp
 
 
@@ -63,11 +61,18 @@ def _reduce(expr: sp.Expr, memo: dict) -> sp.Expr:
     return _rebuild(poly)
 
 
-def reduce_all(exprs: Iterable[sp.Expr]) -> list[sp.Expr]:
-    return [reduce(e) for e in exprs]
-
-
 # -- to a polynomial in the sines and cosines ---------------------------------
+
+def monomial_may_square(powers: dict) -> bool:
+    """:func:`_may_square` for a product given as {base: exponent}, as gacli.equations groups terms."""
+    for base, exp in powers.items():
+        if _is_trig(base):
+            if not exp.is_Integer or exp >= 2 or exp < 0:
+                return True
+        elif not (base.is_Symbol or base.is_Number):
+            return True  # a sum or function: only the full walk can tell
+    return False
+
 
 def _may_square(expr: sp.Expr) -> bool:
     """Whether multiplying out could give a square of a sine or cosine (else there is nothing to reduce).

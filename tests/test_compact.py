@@ -35,8 +35,6 @@ def _unreduced(path: Path, monkeypatch):
     with monkeypatch.context() as m:
         m.setattr(trig, "reduce", lambda expr: expr)
         m.setattr(frames, "in_wheel_heading", lambda rows, axle: rows)
-        for module in ("gacli.kinematics", "gacli.forces", "gacli.gibbs"):
-            m.setattr(f"{module}.pythagorean", lambda expr: expr)
         return derive(load(path))
 
 
