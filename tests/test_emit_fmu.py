@@ -354,3 +354,22 @@ def test_without_a_compiler_the_fmu_carries_sources_and_says_so(monkeypatch, tmp
         assert not any(n.startswith("binaries/") for n in archive.namelist())
     need_fmpy()
     assert validate(tmp_path / "s.fmu") == []
+
+
+def test_readme_fmu_example_runs(compiler, tmp_path):
+    """The README's commands (the Python kept as docs/fmu_example.py): the sphere ends on eq. (14.30)'s circle."""
+    import cmath
+    import re
+
+    need_fmpy()
+    readme = (ROOT / "README.md").read_text()
+    example = (ROOT / "docs" / "fmu_example.py").read_text()
+    assert "gacli derive systems/sphere_on_turntable.yaml --format fmu --output sphere.fmu" in readme
+    assert example.strip() in readme
+    _cli_fmu(SPHERE, tmp_path / "sphere.fmu", "0")
+    (tmp_path / "example.py").write_text(example)
+    out = subprocess.run([sys.executable, "example.py"], cwd=tmp_path, capture_output=True, text=True, check=True)
+    x, y = map(float, re.fullmatch(r"x = (\S+), y = (\S+)\n", out.stdout).groups())
+    omega = 2 * 2.0 / 7  # (dot x, dot y) turns at 2 Omega / 7 from (0.1, 0)
+    z = 0.1 * (cmath.exp(1j * omega * 5.0) - 1) / (1j * omega)
+    assert abs(x - z.real) <= 1e-4 and abs(y - z.imag) <= 1e-4
