@@ -60,6 +60,8 @@ def emit_fmu(derivation: Derivation, *, binary: bool = True,
         EmitError: when an expression has no C rendering, or the compiler
             fails (or ``$CC`` names no program).
     """
+    from gacli import __version__
+
     lay = layout(derivation)
     sources = emit_c(derivation)
     table = variables(derivation, lay)
@@ -68,9 +70,7 @@ def emit_fmu(derivation: Derivation, *, binary: bool = True,
     sources[f"{lay.system}_fmu.c"] = wrapper(
         name=lay.system, prefix=lay.prefix, guid=guid, defaults=[lay.defaults.get(p, 0.0) for p in lay.parameters],
         comment_lines=header_lines(derivation, "fmu"))
-    import gacli
-
-    xml = model_description(derivation, lay, table, guid=guid, tool=f"gacli {gacli.__version__}",
+    xml = model_description(derivation, lay, table, guid=guid, tool=f"gacli {__version__}",
                             sources=[f"{lay.system}_fmu.c", f"{lay.system}.c"])
     members = [("modelDescription.xml", xml)]
     members += [(f"sources/{name}", text.encode("utf-8")) for name, text in sorted(sources.items())]
