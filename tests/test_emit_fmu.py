@@ -393,3 +393,30 @@ def test_a_source_fmu_builds_with_fmpy_and_simulates(tmp_path):
     radius = 7 * 0.1 / (2 * 2.0)
     centre = 1j * 0.1j / omega  # z0 + i w0 / omega with z0 = 0, w0 = 0.1i
     assert np.max(np.abs(np.abs(result["x"] + 1j * result["y"] - centre) - radius)) < 1e-7
+
+
+def test_misuse_and_a_singular_mass_matrix_are_fmi2_errors_with_a_message(compiler, tmp_path, capfd):
+    fmpy = need_fmpy()
+    from fmpy.fmi1 import FMICallException
+
+    d = derivation("systems/sphere_on_turntable")
+    path = write_fmu(d, tmp_path)
+    model = Model(path, fmpy.extract(str(path), str(tmp_path / "u")))
+    refs, fmu = model.refs, model.fmu
+    try:
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.setReal([refs["M"], refs["I"]], [0.0, 0.0])  # no mass, no inertia: M is zero
+        fmu.exitInitializationMode()
+        with pytest.raises(FMICallException):
+            fmu.setReal([refs["a"]], [0.2])
+        with pytest.raises(FMICallException):
+            fmu.setReal([refs["der(x)"]], [1.0])
+        dx = np.zeros(len(layout(d).state))
+        with pytest.raises(FMICallException):
+            fmu.getDerivatives(dx.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), len(dx))
+        log = capfd.readouterr().out
+        assert "parameters are fixed" in log and "only states, parameters and inputs" in log
+        assert "mass matrix is not positive definite at t = 0 (pivot 1)" in log
+    finally:
+        model.close()
