@@ -69,7 +69,7 @@ def emit_fmu(derivation: Derivation, *, binary: bool = True,
     guid = guid_from(digest.hexdigest())
     sources[f"{lay.system}_fmu.c"] = wrapper(
         name=lay.system, prefix=lay.prefix, guid=guid, defaults=[lay.defaults.get(p, 0.0) for p in lay.parameters],
-        comment_lines=header_lines(derivation, "fmu"))
+        comment_lines=header_lines(derivation, f"fmu --output {lay.system}.fmu"))  # an FMU is never printed
     xml = model_description(derivation, lay, table, guid=guid, tool=f"gacli {__version__}",
                             sources=[f"{lay.system}_fmu.c", f"{lay.system}.c"])
     members = [("modelDescription.xml", xml)]
