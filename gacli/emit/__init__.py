@@ -2,11 +2,11 @@
 
 Every emitter is a pure function ``emit_X(derivation, **options)`` that
 returns ``{file name: file text}`` and writes nothing; the CLI writes the
-files. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
+files. The FMU's one file is a zip, so its value is bytes. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
 imported on first use, so that ``gacli check`` does not pay for them.
 
 >>> sorted(EMITTERS)
-['c', 'latex', 'python']
+['c', 'fmu', 'latex', 'python']
 """
 
 from __future__ import annotations
@@ -43,13 +43,21 @@ def emit_latex(derivation: Derivation, **options) -> dict[str, str]:
     return emit(derivation, **options)
 
 
+def emit_fmu(derivation: Derivation, **options) -> dict[str, bytes]:
+    """``{"<name>.fmu": zip bytes}``, FMI 2.0 Model Exchange: see :mod:`gacli.emit.fmu`."""
+    from gacli.emit.fmu import emit_fmu as emit
+
+    return emit(derivation, **options)
+
+
 EMITTERS: dict[str, Emitter] = {
     "python": emit_python,
     "c": emit_c,
     "latex": emit_latex,
+    "fmu": emit_fmu,
 }
 
-__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_latex", "emit_python"]
+__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_fmu", "emit_latex", "emit_python"]
 
 
 class _CallablePackage(types.ModuleType):
