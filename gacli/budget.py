@@ -11,6 +11,7 @@ a traceback. Running out of memory is reported the same way.
 from __future__ import annotations
 
 import contextlib
+import traceback
 from collections.abc import Iterator
 
 from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
@@ -65,10 +66,26 @@ def budget(path: str, seconds: float | None) -> Iterator[Budget]:
     try:
         with time_limit(seconds or 0, state._alarm):
             yield state
-    except MemoryError:
-        # The frames that held the memory are gone by now: a message can be made.
+    except MemoryError as exc:
+        forget_frames(exc)
         raise state.error(f"ran out of memory in the step '{state.step}'") from None
-    except Exception:
+    except Exception as exc:
         if state.expired:
+            forget_frames(exc)
             raise state.error(state.message()) from None
         raise
+
+
+def forget_frames(exc: BaseException) -> None:
+    """Drop the locals of the frames an abandoned computation left in ``exc``'s traceback.
+
+    The new error keeps the old one as its context, and the old one's
+    frames hold the half-built expressions (hundreds of MB for a runaway
+    expansion) in reference cycles that the collector frees late: `check`
+    over a folder, or a notebook, would grow by that much per file.
+    """
+    seen: set[int] = set()
+    while exc is not None and id(exc) not in seen:
+        seen.add(id(exc))
+        traceback.clear_frames(exc.__traceback__)
+        exc = exc.__context__

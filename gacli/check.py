@@ -29,7 +29,7 @@ import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
-from gacli.budget import STEP_LOAD, STEP_READ  # one name for each step, shared with every command
+from gacli.budget import STEP_LOAD, STEP_READ, forget_frames  # one name for each step, shared with every command
 from gacli.equations import Derivation, derive
 from gacli.errors import (
     DerivationError,
@@ -209,10 +209,13 @@ def check_file(path: str | Path, *, timeout: float | None = DEFAULT_TIMEOUT, ver
             _check(Path(path), findings, verify)
     except SystemFileError as exc:
         findings.diagnostics.extend(exc.diagnostics)
+        forget_frames(exc)  # a folder of runaway files must not keep each one's half-built expressions
     except GacliError as exc:
         findings.error(str(exc))
+        forget_frames(exc)
     except Exception as exc:  # noqa: BLE001 - one broken file must not stop the gate
         _crashed(findings, exc, timeout)
+        forget_frames(exc)
     return FileReport(
         path=str(path), diagnostics=_tidy(findings.diagnostics, str(path)),
         classifications=findings.classifications, k=findings.k, independent=findings.independent,

@@ -1,0 +1,124 @@
+"""The hostile corpus through every command and every format, not only ``check``.
+
+Every file in ``tests/hostile/`` is run through ``check``, ``derive`` (text,
+``--steps``, every ``--format`` with ``--output``, LaTeX standalone, the
+reactions), ``gibbs``, ``verify``, ``linearize`` and ``simulate``, all in one
+fresh process (tests/hostile_driver.py) with a 2 s budget. Each must end in
+exit 1 with a located error saying what ``check`` says, no traceback, nothing
+written, no injected code run, under 20 s; and the whole run stays under
+1 GiB.
+
+Every file in ``tests/accepted_hostile/`` (files ``check`` accepts though
+they were written to hurt) must give LaTeX that pdflatex compiles without
+shell escape and without opening a file outside the TeX tree and the
+document's folder, C that gcc and clang compile strictly, and Python that
+imports.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from gacli.cli import app
+from hostile_driver import commands
+from test_hostile import FILES, expected, planted
+
+HERE = Path(__file__).resolve().parent
+ACCEPTED = sorted((HERE / "accepted_hostile").glob("*.yaml"))
+CASE_SECONDS = 20
+PEAK_MIB = 1024
+
+
+def _corpus_run(work: Path) -> dict:
+    paths = [planted(source, work)[0] for source in FILES]
+    env = {**os.environ, "PYTHONPATH": str(HERE.parent)}
+    done = subprocess.run([sys.executable, str(HERE / "hostile_driver.py"), str(work), *map(str, paths)],
+                          capture_output=True, text=True, timeout=1800, env=env, cwd=work)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout)
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory) -> dict:
+    return _corpus_run(tmp_path_factory.mktemp("corpus"))
+
+
+def test_the_corpus_ran_in_under_a_gibibyte(corpus):
+    assert corpus["peak_mib"] < PEAK_MIB, corpus["peak_mib"]
+
+
+@pytest.mark.parametrize("source", FILES, ids=lambda p: p.stem)
+def test_every_command_refuses_the_file_cleanly(corpus, source):
+    records = [r for r in corpus["records"] if r["file"] == source.stem]
+    assert sorted(r["command"] for r in records) == sorted(commands())
+    expect = expected(source)
+    for r in records:
+        where = f"{r['command']}: {r['output']}"
+        assert r["crashed"] is None, where + r["crashed"]
+        assert r["exit"] == 1, where
+        assert "Traceback" not in r["output"] and "internal error" not in r["output"], where
+        assert re.search(rf"{re.escape(source.stem)}\.yaml:\d+:\d+: error: ", r["output"]), where
+        assert expect in r["output"] or "ran out of time" in r["output"], where
+        assert r["written"] == [], where
+        assert not r["marker"], where
+        assert r["seconds"] < CASE_SECONDS, where
+
+
+# -- files check accepts: what gacli writes from them must build ------------------------------
+
+def _derive(path: Path, out: Path, *options: str) -> None:
+    result = CliRunner().invoke(app, ["derive", *options, "--output", str(out), str(path)])
+    assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize("source", ACCEPTED, ids=lambda p: p.stem)
+def test_accepted_hostile_latex_compiles_and_reads_no_outside_file(source, tmp_path):
+    from conftest import require_tool
+
+    pdflatex = require_tool("pdflatex")
+    for options in (("--standalone",), ("--standalone", "--steps")):
+        _derive(source, tmp_path / "doc.tex", "--format", "latex", *options)
+        run = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
+                              "-recorder", "doc.tex"], cwd=tmp_path, capture_output=True, text=True, timeout=180)
+        assert run.returncode == 0, run.stdout[-3000:]
+        texmf = subprocess.run(["kpsewhich", "-var-value=SELFAUTOPARENT"], capture_output=True, text=True)
+        allowed = [str(tmp_path), "/usr/share/texlive", "/usr/share/texmf", "/var/lib/texmf", "/etc/texmf",
+                   texmf.stdout.strip() or "/nonexistent"]
+        for line in (tmp_path / "doc.fls").read_text(encoding="utf-8", errors="replace").splitlines():
+            kind, _, name = line.partition(" ")
+            if kind in ("INPUT", "OUTPUT"):
+                absolute = str((tmp_path / name).resolve())
+                assert any(absolute.startswith(a) for a in allowed), line
+
+
+@pytest.mark.parametrize("source", ACCEPTED, ids=lambda p: p.stem)
+@pytest.mark.parametrize("compiler", ["gcc", "clang"])
+@pytest.mark.parametrize("flags", [["-std=c99", "-pedantic"], ["-std=gnu11", "-D_GNU_SOURCE"]],
+                         ids=["c99", "gnu11"])
+def test_accepted_hostile_c_compiles(source, compiler, flags, tmp_path):
+    from conftest import require_tool
+
+    _derive(source, tmp_path, "--format", "c", "--reactions")
+    (c_file,) = tmp_path.glob("*.c")
+    done = subprocess.run([require_tool(compiler), *flags, "-Wall", "-Wextra", "-Werror", "-c", c_file.name,
+                           "-o", "out.o"], cwd=tmp_path, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("source", ACCEPTED, ids=lambda p: p.stem)
+def test_accepted_hostile_python_imports(source, tmp_path):
+    _derive(source, tmp_path, "--format", "python", "--reactions")
+    (module_file,) = tmp_path.glob("*.py")
+    spec = importlib.util.spec_from_file_location(module_file.stem, module_file)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    assert callable(module.rhs)
