@@ -147,11 +147,10 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
-        problem = exc.problem or exc.context or "invalid YAML"
-        raise _fail(path, f"invalid YAML: {problem}", line, col) from None
-    except yaml.YAMLError as exc:  # e.g. a reader error on control characters
+        raise _fail(path, *_marked_problem(exc)) from None
+    except yaml.reader.ReaderError as exc:
+        raise _fail(path, *_reader_problem(exc, text)) from None
+    except yaml.YAMLError as exc:
         raise _fail(path, f"invalid YAML: {exc}".splitlines()[0]) from None
     except RecursionError:
         raise _fail(path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)") from None
@@ -199,6 +198,37 @@ def _compose_fast(text: str) -> yaml.Node | None:
         return None
     finally:
         loader.dispose()
+
+
+def _marked_problem(exc: yaml.MarkedYAMLError) -> tuple[str, int, int]:
+    """PyYAML's complaint in the file's terms, where PyYAML's own words are parser jargon."""
+    mark = exc.problem_mark or exc.context_mark
+    line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+    problem = exc.problem or exc.context or "invalid YAML"
+    context = exc.context_mark
+    if problem.startswith("expected <block end>") and context is not None:
+        # The scanner closed the mapping or list that began at the context mark,
+        # then met more content: a line indented unlike its siblings.
+        return (f"invalid YAML: this line is indented to column {col}, which does not line up with the "
+                f"entries it follows (the block at line {context.line + 1} starts at column "
+                f"{context.column + 1}); entries of one mapping or list must start in the same column",
+                line, col)
+    if problem == "mapping values are not allowed here":
+        return ("invalid YAML: a ':' inside a value: this line is indented deeper than the key above it, so it "
+                "reads as part of that key's value; start it in the same column as its siblings, or quote "
+                "the value if the ':' belongs to it", line, col)
+    if "'\\t'" in problem:  # PyYAML names the character by its repr
+        return "invalid YAML: a tab character; YAML indents with spaces only", line, col
+    return f"invalid YAML: {problem}", line, col
+
+
+def _reader_problem(exc: yaml.reader.ReaderError, text: str) -> tuple[str, int, int]:
+    """A character PyYAML refuses, located at its line rather than at the top of the file."""
+    position = max(0, min(exc.position, len(text)))
+    line = text.count("\n", 0, position) + 1
+    col = position - (text.rfind("\n", 0, position) + 1) + 1
+    char = exc.character if isinstance(exc.character, int) else ord(str(exc.character)[:1] or "?")
+    return f"invalid YAML: control character U+{char:04X} is not allowed in a YAML file", line, col
 
 
 def _decode(data: bytes, path: str) -> str:
