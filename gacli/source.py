@@ -138,6 +138,7 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     digest = hashlib.sha256(data).hexdigest()
     root = _compose_fast(text)
     if root is not None:
+        _check_expansion(root, path, text)
         try:
             return SourceFile(path, text, digest, _Converter(path, text, libyaml=True).convert(root, 0))
         except (_NotLikePyYAML, SystemFileError):
@@ -156,7 +157,51 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
         raise _fail(path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)") from None
     if root is None:
         raise _fail(path, "the file is empty; a system file is a YAML mapping", 1, 1)
+    _check_expansion(root, path, text)
     return SourceFile(path, text, digest, _Converter(path, text).convert(root, 0))
+
+
+def _check_expansion(root: yaml.Node, path: str, text: str) -> None:
+    """Refuse a node graph whose expansion passes the limits, before anything walks the expansion.
+
+    Aliases share nodes, so the sizes are summed over the graph with each
+    distinct node counted once (a walk of the graph, not of its expansion):
+    a billion laughs is refused in the time it takes to read it.
+    """
+    sizes: dict[int, tuple[int, int]] = {}
+    open_nodes: set[int] = set()  # entered, children not yet done: meeting one again is a cycle
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    while stack:
+        node, children_done = stack.pop()
+        if id(node) in sizes:
+            continue
+        children = _children(node)
+        if not children_done:
+            if id(node) in open_nodes:
+                mark = node.start_mark
+                raise _fail(path, "the YAML contains itself (an alias inside the node it names)",
+                            mark.line + 1, mark.column + 1)
+            open_nodes.add(id(node))
+            stack.append((node, True))
+            stack.extend((child, False) for child in children if id(child) not in sizes)
+            continue
+        open_nodes.discard(id(node))
+        nodes = 1 + sum(sizes[id(c)][0] for c in children)
+        chars = (len(node.value) if isinstance(node, yaml.ScalarNode) else 0) + sum(sizes[id(c)][1] for c in children)
+        sizes[id(node)] = (nodes, chars)
+        if nodes > MAX_NODES or chars > MAX_EXPANDED_CHARS:
+            what = f"{MAX_NODES} nodes" if nodes > MAX_NODES else f"{MAX_EXPANDED_CHARS} characters of text"
+            mark = node.start_mark
+            raise _fail(path, f"the YAML expands to more than {what} (aliases repeat this part; "
+                        f"the file has {len(text)} characters)", mark.line + 1, mark.column + 1)
+
+
+def _children(node: yaml.Node) -> list[yaml.Node]:
+    if isinstance(node, yaml.SequenceNode):
+        return list(node.value)
+    if isinstance(node, yaml.MappingNode):
+        return [n for pair in node.value for n in pair]
+    return []
 
 
 # Text that libyaml reads where PyYAML's scanner refuses it (found by
