@@ -134,6 +134,7 @@ class _Builder:
         inputs = tuple(Input(s.name, self.where_of(s.node), s.description, s.unit, s.latex) for s in self.decl.of_kind("input"))
         quasi = tuple(self._quasi(s) for s in self.decl.of_kind("quasi"))
         self.frames = self._frames()
+        self._failed_points: set[str] = set()
         self.points = self._points()
         bodies = tuple(b for b in (self._body(b) for b in self.decl.bodies) if b)
         self.body_frames = {b.name: b.frame for b in self.decl.bodies if b.frame is not None}
@@ -325,6 +326,13 @@ class _Builder:
     def _point_named(self, node: Scalar, where: str):
         if node.text in self.points:
             return self.points[node.text]
+        if node.text in self._resolving:
+            circle = " → ".join(self._resolving[self._resolving.index(node.text):] + [node.text])
+            self.error(node, where, f"the points {circle} are each defined from the next, in a circle; "
+                       "give one of them from a frame's components alone")
+            return None
+        if node.text in self._point_decls:  # declared later: resolved now; its own errors are reported there
+            return self._resolve_point(self._point_decls[node.text])
         choices = set(self.points) | {b.name for b in self.decl.bodies}
         self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, choices))
         return None
@@ -364,17 +372,30 @@ class _Builder:
         return F.oriented(decl.name, frames[parent], rotations, self.differential)
 
     def _points(self) -> dict[str, tuple]:
-        points: dict[str, tuple] = {}
-        self.points = points
+        """The named points, each resolved when first needed: a point may be given from a later one."""
+        self.points, self._point_decls, self._resolving = {}, {}, []
         for decl in self.decl.points:
-            where = f"points.{decl.name}"
-            if decl.name in points:
-                self.error(decl.node, where, f"'{decl.name}' is already a point")
+            if decl.name in self._point_decls:
+                self.error(decl.node, f"points.{decl.name}", f"'{decl.name}' is already a point")
                 continue
-            value = self._in_frames(decl.position, where, self.scopes.config)
-            if value is not None:
-                points[decl.name] = value
-        return points
+            self._point_decls[decl.name] = decl
+        for decl in self._point_decls.values():
+            self._resolve_point(decl)
+        return self.points
+
+    def _resolve_point(self, decl):
+        if decl.name in self.points:
+            return self.points[decl.name]
+        if decl.name in self._failed_points:
+            return None
+        self._resolving.append(decl.name)
+        value = self._in_frames(decl.position, f"points.{decl.name}", self.scopes.config)
+        self._resolving.pop()
+        if value is None:
+            self._failed_points.add(decl.name)
+        else:
+            self.points[decl.name] = value
+        return value
 
     # -- bodies and loads --------------------------------------------------
     def _body(self, decl: BodyDecl) -> Body | None:
@@ -457,7 +478,7 @@ class _Builder:
         if node.text in self.points:
             return self.points[node.text]
         declared = {b.name for b in self.decl.bodies}
-        if node.text not in declared:
+        if node.text not in declared and node.text not in self._point_decls:  # a declared point's errors are its own
             self.error(node, where, f"'{node.text}' is not a body or a point",
                        did_you_mean(node.text, declared | set(self.points)))
         return None
@@ -493,7 +514,7 @@ class _Builder:
         if node.text in bodies:
             return bodies[node.text]
         declared = {b.name for b in self.decl.bodies}
-        if node.text not in declared:
+        if node.text not in declared and node.text not in self._point_decls:  # a declared point's errors are its own
             self.error(node, where, f"'{node.text}' is not a body", did_you_mean(node.text, declared))
         return None
 

@@ -138,6 +138,7 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     digest = hashlib.sha256(data).hexdigest()
     root = _compose_fast(text)
     if root is not None:
+        _check_expansion(root, path, text)
         try:
             return SourceFile(path, text, digest, _Converter(path, text, libyaml=True).convert(root, 0))
         except (_NotLikePyYAML, SystemFileError):
@@ -147,17 +148,60 @@ def parse_source(data: bytes, path: str = "<string>") -> SourceFile:
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
-        problem = exc.problem or exc.context or "invalid YAML"
-        raise _fail(path, f"invalid YAML: {problem}", line, col) from None
-    except yaml.YAMLError as exc:  # e.g. a reader error on control characters
+        raise _fail(path, *_marked_problem(exc)) from None
+    except yaml.reader.ReaderError as exc:
+        raise _fail(path, *_reader_problem(exc, text)) from None
+    except yaml.YAMLError as exc:
         raise _fail(path, f"invalid YAML: {exc}".splitlines()[0]) from None
     except RecursionError:
         raise _fail(path, f"YAML is nested too deeply (the limit is {MAX_DEPTH} levels)") from None
     if root is None:
         raise _fail(path, "the file is empty; a system file is a YAML mapping", 1, 1)
+    _check_expansion(root, path, text)
     return SourceFile(path, text, digest, _Converter(path, text).convert(root, 0))
+
+
+def _check_expansion(root: yaml.Node, path: str, text: str) -> None:
+    """Refuse a node graph whose expansion passes the limits, before anything walks the expansion.
+
+    Aliases share nodes, so the sizes are summed over the graph with each
+    distinct node counted once (a walk of the graph, not of its expansion):
+    a billion laughs is refused in the time it takes to read it.
+    """
+    sizes: dict[int, tuple[int, int]] = {}
+    open_nodes: set[int] = set()  # entered, children not yet done: meeting one again is a cycle
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    while stack:
+        node, children_done = stack.pop()
+        if id(node) in sizes:
+            continue
+        children = _children(node)
+        if not children_done:
+            if id(node) in open_nodes:
+                mark = node.start_mark
+                raise _fail(path, "the YAML contains itself (an alias inside the node it names)",
+                            mark.line + 1, mark.column + 1)
+            open_nodes.add(id(node))
+            stack.append((node, True))
+            stack.extend((child, False) for child in children if id(child) not in sizes)
+            continue
+        open_nodes.discard(id(node))
+        nodes = 1 + sum(sizes[id(c)][0] for c in children)
+        chars = (len(node.value) if isinstance(node, yaml.ScalarNode) else 0) + sum(sizes[id(c)][1] for c in children)
+        sizes[id(node)] = (nodes, chars)
+        if nodes > MAX_NODES or chars > MAX_EXPANDED_CHARS:
+            what = f"{MAX_NODES} nodes" if nodes > MAX_NODES else f"{MAX_EXPANDED_CHARS} characters of text"
+            mark = node.start_mark
+            raise _fail(path, f"the YAML expands to more than {what} (aliases repeat this part; "
+                        f"the file has {len(text)} characters)", mark.line + 1, mark.column + 1)
+
+
+def _children(node: yaml.Node) -> list[yaml.Node]:
+    if isinstance(node, yaml.SequenceNode):
+        return list(node.value)
+    if isinstance(node, yaml.MappingNode):
+        return [n for pair in node.value for n in pair]
+    return []
 
 
 # Text that libyaml reads where PyYAML's scanner refuses it (found by
@@ -199,6 +243,37 @@ def _compose_fast(text: str) -> yaml.Node | None:
         return None
     finally:
         loader.dispose()
+
+
+def _marked_problem(exc: yaml.MarkedYAMLError) -> tuple[str, int, int]:
+    """PyYAML's complaint in the file's terms, where PyYAML's own words are parser jargon."""
+    mark = exc.problem_mark or exc.context_mark
+    line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+    problem = exc.problem or exc.context or "invalid YAML"
+    context = exc.context_mark
+    if problem.startswith("expected <block end>") and context is not None:
+        # The scanner closed the mapping or list that began at the context mark,
+        # then met more content: a line indented unlike its siblings.
+        return (f"invalid YAML: this line is indented to column {col}, which does not line up with the "
+                f"entries it follows (the block at line {context.line + 1} starts at column "
+                f"{context.column + 1}); entries of one mapping or list must start in the same column",
+                line, col)
+    if problem == "mapping values are not allowed here":
+        return ("invalid YAML: a ':' inside a value: this line is indented deeper than the key above it, so it "
+                "reads as part of that key's value; start it in the same column as its siblings, or quote "
+                "the value if the ':' belongs to it", line, col)
+    if "'\\t'" in problem:  # PyYAML names the character by its repr
+        return "invalid YAML: a tab character; YAML indents with spaces only", line, col
+    return f"invalid YAML: {problem}", line, col
+
+
+def _reader_problem(exc: yaml.reader.ReaderError, text: str) -> tuple[str, int, int]:
+    """A character PyYAML refuses, located at its line rather than at the top of the file."""
+    position = max(0, min(exc.position, len(text)))
+    line = text.count("\n", 0, position) + 1
+    col = position - (text.rfind("\n", 0, position) + 1) + 1
+    char = exc.character if isinstance(exc.character, int) else ord(str(exc.character)[:1] or "?")
+    return f"invalid YAML: control character U+{char:04X} is not allowed in a YAML file", line, col
 
 
 def _decode(data: bytes, path: str) -> str:

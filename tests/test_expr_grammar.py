@@ -585,3 +585,20 @@ def test_sums_built_at_once_are_the_pairwise_expressions(tree: grammar.Node) -> 
     symbols = {n: sp.Symbol(n, real=True) for n in "xyz"}
     built, expected = build(tree, Scope(values=symbols)), pairwise(tree, symbols)
     assert built == expected and sp.srepr(built) == sp.srepr(expected)
+
+
+@pytest.mark.parametrize(("text", "words"), [
+    ("0x1F", ["hexadecimal literal", "write 31"]),
+    ("2*0b101", ["binary literal", "write 5"]),
+    ("0o17 + x", ["octal literal", "write 15"]),
+    ("1_000*x", ["'_' between digits", "'1000'"]),
+    (".inf", ["YAML's spelling of infinity"]),
+    ("-.NaN", ["not-a-number"]),
+])
+def test_numbers_from_other_languages_are_named(text: str, words: list[str]) -> None:
+    # Before: "expected an operator between '0' and 'x1F'", "attribute access ('.')".
+    err = error(text)
+    assert text.index(text.lstrip("-2*")[0]) <= err.pos <= len(text)
+    for word in words:
+        assert word in err.message
+    assert "attribute access" not in err.message and "expected an operator" not in err.message

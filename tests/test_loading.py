@@ -168,3 +168,32 @@ bodies: {p: {mass: mm, position: [xx, 0]}}
     assert len(messages) == 2
     assert messages[0].startswith("many.yaml:6:")
     assert "did you mean 'm'?" in messages[0] and "did you mean 'x'?" in messages[1]
+
+
+POINTS = """\
+gacli: 1
+name: pts
+parameters: {m: {value: 1}, l: {value: 1}}
+coordinates: [x]
+points:
+%s
+bodies:
+  b: {mass: m, position: p}
+"""
+
+
+def test_a_point_may_be_given_from_a_later_one():
+    system = loads(POINTS % "  p: {from: q, N: [l, 0, 0]}\n  q: {N: [x, 0, 0]}")
+    assert [str(e) for e in system.bodies[0].position] == ["l + x", "0", "0"]
+
+
+@pytest.mark.parametrize("points", [
+    "  p: {from: q, N: [l, 0, 0]}\n  q: {from: p, N: [0, l, 0]}",
+    "  p: {from: p, N: [l, 0, 0]}",
+    "  p: {from: q, N: [l, 0, 0]}\n  q: {from: r, N: [0, l, 0]}\n  r: {from: p, N: [x, 0, 0]}",
+])
+def test_a_circle_of_points_is_one_clear_error(points):
+    with pytest.raises(SystemFileError) as info:
+        loads(POINTS % points, "f.yaml")
+    (diagnostic,) = info.value.diagnostics
+    assert "in a circle" in diagnostic.message and "is not a point" not in str(info.value)

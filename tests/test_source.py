@@ -67,3 +67,40 @@ def test_the_shipped_systems_are_read_by_libyaml():
 def test_libyaml_and_pyyaml_agree_where_they_differ(text, monkeypatch):
     data = text.encode("utf-8")
     assert either(data) == python_only(monkeypatch, data)
+
+
+def _error_of(text: str):
+    with pytest.raises(SystemFileError) as info:
+        source.parse_source(text.encode("utf-8"), "f.yaml")
+    (diagnostic,) = info.value.diagnostics
+    return diagnostic
+
+
+@pytest.mark.parametrize("char", ["\x07", "\x1b", "\x7f", "\x08"])
+def test_a_control_character_is_located_at_its_line(char):
+    text = "gacli: 1\nname: c\ntitle: fine\ncoordinates: [x]\nbodies:\n  b: {mass: m" + char + ", position: [x, 0]}\n"
+    d = _error_of(text)
+    assert (d.location.line, d.location.column) == (6, 14)
+    assert f"U+{ord(char):04X}" in d.message
+
+
+@pytest.mark.parametrize(("text", "line", "column"), [
+    ("gacli: 1\nparameters:\n  m: {value: 1}\n   k: {value: 2}\n", 4, 4),
+    ("gacli: 1\nparameters:\n    m: {value: 1}\n  k: {value: 2}\n", 4, 3),
+    ("bodies:\n  - a\n  - b\n - c\n", 4, 2),
+])
+def test_an_indentation_mistake_is_said_in_the_files_terms(text, line, column):
+    d = _error_of(text)
+    assert (d.location.line, d.location.column) == (line, column)
+    assert "does not line up" in d.message and "<block" not in d.message
+
+
+def test_a_key_indented_under_a_value_is_explained():
+    d = _error_of("bodies:\n  b:\n    mass: m\n      position: [x, 0]\n")
+    assert d.location.line == 4
+    assert "indented deeper than the key above it" in d.message
+
+
+def test_a_tab_is_named():
+    d = _error_of("gacli: 1\nparameters:\n\tm: {value: 1}\n")
+    assert d.location.line == 3 and "tab" in d.message

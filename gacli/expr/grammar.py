@@ -214,7 +214,7 @@ def _tokenize(text: str) -> list[_Token]:
     while pos < end:
         found = match(text, pos)
         if found is None:
-            raise _bad_character(text[pos], pos)
+            raise _bad_character(text[pos], pos, text)
         kind = found.lastgroup
         if kind == "op":  # the commonest token needs no checks: spare it _token's call
             word = found.group()
@@ -239,8 +239,25 @@ def _token(match: re.Match[str], text: str) -> _Token:
     return _Token(kind, word, pos)
 
 
+_PREFIXED = re.compile(r"0([xXbBoO])[0-9A-Fa-f_]+")
+_BASES = {"x": "hexadecimal", "b": "binary", "o": "octal"}
+_SEPARATED = re.compile(r"[0-9]+(?:_[0-9]+)+")
+
+
 def _check_number(word: str, pos: int, text: str) -> None:
     after = pos + len(word)
+    prefixed = _PREFIXED.match(text, pos)
+    if prefixed and word == "0":
+        literal = prefixed.group()
+        base = _BASES[prefixed.group(1).lower()]
+        value = _integer(literal, 0)
+        hint = f" (write {value})" if value is not None else ""
+        raise ParseError(f"{_show(literal)} is a {base} literal; gacli takes only decimal numbers{hint}", pos)
+    separated = _SEPARATED.match(text, pos)
+    if separated and separated.end() > after:
+        literal = separated.group()
+        raise ParseError(f"{_show(literal)}: '_' between digits is not allowed in a number "
+                         f"(write {_show(literal.replace('_', ''))})", pos)
     if text[after : after + 1] in ("e", "E"):  # '2e', '2e+': digits never came
         raise ParseError(
             f"malformed number {_show(text[pos : after + 1])}: an exponent needs digits, "
@@ -256,6 +273,16 @@ def _check_number(word: str, pos: int, text: str) -> None:
             f"(at most {MAX_LITERAL_EXPONENT} in absolute value)", pos)
 
 
+def _integer(literal: str, base: int) -> int | None:
+    """The literal's value when it is short enough to show, else None (a message, not a computation)."""
+    if len(literal) > 18:
+        return None
+    try:
+        return int(literal, base)
+    except ValueError:
+        return None
+
+
 def _check_name(word: str, pos: int) -> None:
     if keyword.iskeyword(word):
         raise ParseError(f"'{word}' is a Python keyword, not allowed in an expression", pos)
@@ -263,7 +290,16 @@ def _check_name(word: str, pos: int) -> None:
         raise ParseError(f"name {_show(word)} contains '__': dunder names are not allowed", pos)
 
 
-def _bad_character(char: str, pos: int) -> ParseError:
+# YAML 1.1's spellings of the special floats: a '.' here is not attribute access.
+_YAML_SPECIAL = re.compile(r"\.(?:inf|Inf|INF|nan|NaN|NAN)(?![A-Za-z0-9_])")
+
+
+def _bad_character(char: str, pos: int, text: str = "") -> ParseError:
+    special = _YAML_SPECIAL.match(text, pos)
+    if special:
+        return ParseError(f"{_show(special.group())} is YAML's spelling of "
+                          f"{'infinity' if special.group()[1] in 'iI' else 'not-a-number'}; "
+                          "gacli takes only finite decimal numbers", pos)
     if char in _NOT_ALLOWED:
         return ParseError(_NOT_ALLOWED[char], pos)
     if char.isascii() and char.isprintable():
