@@ -317,7 +317,7 @@ def test_check_paths_reports_in_order(tmp_path):
 def test_help_does_not_import_sympy():
     code = ("import sys\nfrom typer.testing import CliRunner\nfrom gacli.cli import app\n"
             "r = CliRunner().invoke(app, ['check', '--help'])\nassert r.exit_code == 0, r.output\n"
-            "assert 'Example: gacli check' in r.output, r.output\nprint('sympy' in sys.modules)")
+            "assert 'Example:\\n  gacli check' in r.output, r.output\nprint('sympy' in sys.modules)")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert done.stdout.strip() == "False", done.stderr
 
