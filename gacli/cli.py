@@ -59,7 +59,12 @@ def _boundary():
     except GacliError as exc:
         from gacli import console
 
-        console.error(str(exc))
+        # Several problems (gacli simulate's options) are one line each, not one line with \n in it.
+        problems = getattr(exc, "problems", ())
+        if len(problems) > 1:
+            console.error(str(exc).split("\n", 1)[0], problems)
+        else:
+            console.error(str(exc))
         raise typer.Exit(code=1) from None
     except MemoryError:
         # Outside a budget (which names the step), still one message, not a traceback.
