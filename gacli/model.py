@@ -159,6 +159,11 @@ class System:
     def free_functions(self) -> tuple[Function, ...]:
         return tuple(f for f in self.functions if f.value is None)
 
+    def __repr__(self) -> str:
+        from gacli.notebook import system_repr
+
+        return system_repr(self)
+
     def declared(self, name: str) -> Declared | None:
         for group in (self.parameters, self.functions, self.inputs, self.coordinates, self.quasi_coordinates):
             for item in group:
