@@ -74,3 +74,11 @@ def test_the_api_objects_are_what_the_reprs_belong_to():
 @pytest.mark.parametrize("name", ["sphere_on_turntable", "chaplygin_sleigh", "particle_in_plane"])
 def test_small_systems_show_their_equations(name):
     assert "\\begin{align*}" in derived(name)._repr_latex_()
+
+
+def test_the_api_words_a_wrong_format_as_the_command_line_does():
+    import gacli
+    from gacli.emit import EMITTERS
+
+    with pytest.raises(gacli.EmitError, match=rf"^'pdf' is not a format; choose one of: {', '.join(sorted(EMITTERS))}$"):
+        gacli.emit(derived("cylinder_in_cylinder"), "pdf")
