@@ -1,4 +1,4 @@
-"""How a derivation and a system show themselves in a notebook and at the prompt.
+"""How a derivation shows itself in a notebook and at the prompt.
 
 Jupyter shows ``_repr_latex_`` through MathJax: text as text, ``$...$`` and
 ``align*`` as mathematics. The equations are those of ``gacli derive
@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # pragma: no cover
     from gacli.equations import Derivation
-    from gacli.model import System
 
 # Tree nodes of M and F together, above which a notebook shows a summary.
 # The shipped systems other than the bicycle stay under 2,000; a page of
@@ -85,11 +84,3 @@ def derivation_repr(d: Derivation) -> str:
     return (f"<Derivation of {s.name!r}: k = {d.k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
             f"speeds {', '.join(str(u) for u in d.speeds)}; M {d.k}x{d.k}, F {d.k}x1>")
 
-
-def system_repr(s: System) -> str:
-    """One line that says what the system is: the dataclass repr would print every expression."""
-    counts = [(len(s.coordinates), "coordinate", "coordinates"),
-              (len(s.quasi_coordinates), "quasi-coordinate", "quasi-coordinates"),
-              (len(s.constraints), "constraint", "constraints"), (len(s.bodies), "body", "bodies")]
-    parts = ", ".join(f"{n} {one if n == 1 else many}" for n, one, many in counts)
-    return f"<System {s.name!r} from {s.path!r}: {parts}>"
