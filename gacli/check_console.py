@@ -79,7 +79,7 @@ def _classified(file: FileReport) -> list[str]:
         if c.kind == "constraint":
             verdicts[c.verdict] = verdicts.get(c.verdict, 0) + 1
     lines = [", ".join(f"{n} {verdict}" for verdict, n in verdicts.items())] if verdicts else []
-    if file.dependent:
+    if file.dependent and lines:  # no verdicts when the check stopped before classifying
         lines[0] += f" ({rank_note(sum(verdicts.values()), file.dependent)})"
     lines += [f"{c.where.rsplit('.', 1)[-1]}: {c.verdict}" for c in file.classifications if c.kind != "constraint"]
     return lines

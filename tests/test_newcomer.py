@@ -119,3 +119,25 @@ def test_a_wrong_state_name_suggests_the_one_meant(written, meant):
                     "--t-end", "0.1")
     assert result.exit_code == 1
     assert f"(did you mean '{meant}'?)" in result.stderr, result.stderr
+
+
+def test_a_report_stopped_before_classifying_still_renders():
+    from gacli.check import CheckReport, FileReport
+
+    stopped = FileReport(path="systems/differential_drive.yaml", k=2, independent=("phi_L", "phi_R"),
+                         dependent=("constraints[3]",))
+    assert "systems/differential_drive.yaml" in render(CheckReport((stopped,)), 80)
+
+
+def test_a_wrong_method_lists_the_choices():
+    result = invoke("simulate", SPHERE, "--method", "euler")
+    assert result.exit_code == 2
+    assert "'euler' is not a method; choose one of: BDF, DOP853, LSODA, RK23, RK45, Radau" in result.output
+
+
+def test_a_newline_inside_one_problem_stays_escaped(capsys):
+    from gacli import console
+
+    console.error("2 problems:", ["one\nerror: forged", "two"])
+    err = capsys.readouterr().err
+    assert err.splitlines() == ["error: 2 problems:", "  one\\nerror: forged", "  two"]
