@@ -7,11 +7,12 @@ from gacli.errors import EmitError
 
 
 def emit(derivation: Derivation, format: str, **options) -> dict[str, str]:
-    """Generated files for ``format`` ("python", "c" or "latex"), as {file name: text}."""
+    """Generated files for ``format`` (a key of :data:`gacli.emit.EMITTERS`), as {file name: text}."""
     from gacli.emit import EMITTERS
 
     try:
         emitter = EMITTERS[format]
     except KeyError:
-        raise EmitError(f"unknown format '{format}' (one of: {', '.join(sorted(EMITTERS))})") from None
+        # Worded as the command line words it (gacli.cli_help.choice).
+        raise EmitError(f"'{format}' is not a format; choose one of: {', '.join(sorted(EMITTERS))}") from None
     return emitter(derivation, **options)

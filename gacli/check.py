@@ -5,7 +5,8 @@ For each file: read it (within the size, depth and alias limits of
 grammar), derive the equations, classify each constraint and quasi-coordinate
 (:mod:`gacli.integrability`) and check that M is symmetric, has no undefined
 entries and is positive definite at a few seeded sample states (when every
-parameter has a value). Unused declarations are warnings.
+parameter has a value). Unused parameters and coordinates are warnings; an
+input that no load uses is a note, which never fails (see docs/check.md).
 
 Every problem becomes a :class:`~gacli.errors.Diagnostic`; nothing a file
 contains can make this module raise. A wall-clock budget per file (SIGALRM,
@@ -49,6 +50,7 @@ from gacli.integrability import (
 )
 from gacli.loading import load_source
 from gacli.model import System
+from gacli.report import dependent_rows
 from gacli.graph import free_symbols, postorder
 from gacli.source import read_source
 from gacli.textsafe import printable, shortened
@@ -88,6 +90,8 @@ class FileReport:
     independent: tuple[str, ...] = ()
     mass_matrix: MassMatrixCheck | None = None
     elapsed: float = 0.0
+    # Rolling rows that repeat the others: classified, but left out of the derivation's l.
+    dependent: tuple[str, ...] = ()
 
     @property
     def errors(self) -> tuple[Diagnostic, ...]:
@@ -95,7 +99,12 @@ class FileReport:
 
     @property
     def warnings(self) -> tuple[Diagnostic, ...]:
-        return tuple(d for d in self.diagnostics if d.severity != "error")
+        return tuple(d for d in self.diagnostics if d.severity == "warning")
+
+    @property
+    def notes(self) -> tuple[Diagnostic, ...]:
+        """Shown, never failing, not even with ``strict``."""
+        return tuple(d for d in self.diagnostics if d.severity == "note")
 
     def failed(self, strict: bool = False) -> bool:
         return bool(self.errors or (strict and self.warnings))
@@ -188,6 +197,7 @@ class _Findings:
     k: int | None = None
     independent: tuple[str, ...] = ()
     mass_matrix: MassMatrixCheck | None = None
+    dependent: tuple[str, ...] = ()
 
     def __call__(self, step: str) -> None:  # derive's progress callback
         self.step = step
@@ -219,7 +229,7 @@ def check_file(path: str | Path, *, timeout: float | None = DEFAULT_TIMEOUT, ver
     return FileReport(
         path=str(path), diagnostics=_tidy(findings.diagnostics, str(path)),
         classifications=findings.classifications, k=findings.k, independent=findings.independent,
-        mass_matrix=findings.mass_matrix, elapsed=time.perf_counter() - start,
+        mass_matrix=findings.mass_matrix, elapsed=time.perf_counter() - start, dependent=findings.dependent,
     )
 
 
@@ -245,6 +255,7 @@ def _check(path: Path, findings: _Findings, verify: bool = False) -> None:
     findings.diagnostics.extend(unused_declarations(system))
     derivation = derive(system, progress=findings)
     findings.k, findings.independent = derivation.k, derivation.independent
+    findings.dependent = dependent_rows(derivation)
     findings(STEP_CLASSIFY)
     findings.classifications = classify(system)
     findings(STEP_MASS)
@@ -308,7 +319,13 @@ def _expiry(findings: _Findings, seconds: float | None) -> Callable[[], Derivati
 # -- warnings ------------------------------------------------------------------
 
 def unused_declarations(system: System) -> list[Diagnostic]:
-    """Warnings: unused parameters, unused inputs, coordinates that no body depends on."""
+    """Warnings (unused parameters, coordinates no body depends on) and notes (unused inputs).
+
+    An input is the generated code's interface as much as the model's: a file
+    may declare a whole force vector (F_x, F_y, F_z) of which a constraint
+    makes one component do no work, and ``--strict`` in CI must not fail it
+    for that. So an unused input is a note: shown, but never failing.
+    """
     used = _symbols_used(system)
     loads = [e for f in system.forces for e in f.vector] + [e for t in system.torques for e in t.vector]
     loaded = _form_symbols(system.work) | free_symbols(loads)
@@ -319,7 +336,9 @@ def unused_declarations(system: System) -> list[Diagnostic]:
             out.append(_warning(p.location, f"parameters.{p.name}", f"parameter '{p.name}' is not used"))
     for i in system.inputs:
         if S.value(i.name) not in loaded:
-            out.append(_warning(i.location, f"inputs.{i.name}", f"input '{i.name}' is declared but no load uses it"))
+            out.append(Diagnostic(i.location, f"input '{i.name}' is declared but no load uses it "
+                                  "(it stays an input of the generated code, with no effect)",
+                                  f"inputs.{i.name}", severity="note"))
     for c in system.coordinates:
         if c.name not in bodies:
             out.append(_warning(c.location, f"coordinates.{c.name}",
@@ -480,6 +499,7 @@ def to_json(report: CheckReport) -> str:
         "files": len(report.files), "failed": len(report.failed),
         "errors": sum(len(f.errors) for f in report.files),
         "warnings": sum(len(f.warnings) for f in report.files),
+        "notes": sum(len(f.notes) for f in report.files),
     }
     data = {"version": JSON_VERSION, "strict": report.strict, "exit_code": report.exit_code,
             "summary": summary, "files": files}
@@ -491,6 +511,7 @@ def _file_json(report: FileReport, strict: bool) -> dict:
     return {
         "path": report.path, "status": report.status(strict), "failed": report.failed(strict),
         "k": report.k, "independent": list(report.independent), "elapsed": round(report.elapsed, 3),
+        "dependent": list(report.dependent),
         "diagnostics": [_diagnostic_json(d) for d in report.diagnostics],
         "classifications": [
             {"kind": c.kind, "where": c.where, "text": c.text, "line": c.location.line,
@@ -512,11 +533,11 @@ def _diagnostic_json(d: Diagnostic) -> dict:
 
 
 def to_github(report: CheckReport) -> str:
-    """GitHub Actions workflow commands: one ``::error`` / ``::warning`` line per diagnostic."""
+    """GitHub Actions workflow commands: one ``::error`` / ``::warning`` / ``::notice`` line per diagnostic."""
     lines = []
     for file in report.files:
         for d in file.diagnostics:
-            level = "error" if d.severity == "error" else "warning"
+            level = {"error": "error", "note": "notice"}.get(d.severity, "warning")
             properties = f"file={_gh_property(d.location.path)},line={d.location.line},col={d.location.column}"
             where = f"{d.where}: " if d.where else ""
             hint = f" ({d.hint})" if d.hint else ""

@@ -15,6 +15,7 @@ from rich.text import Text
 from gacli import console
 from gacli.check import CheckReport, FileReport
 from gacli.console import printable
+from gacli.report import rank_note
 
 _STATUS_STYLE = {"ok": "green", "warning": "yellow", "error": "bold red"}
 
@@ -24,26 +25,64 @@ def show(report: CheckReport) -> None:
     for file in report.files:
         console.diagnostics(file.diagnostics)  # escapes and shortens what the file wrote
     out = console.stdout()
-    out.print(_table(report))
+    out.print(_table(report, out.width), soft_wrap=False)  # a table is laid out to the width, not run on
     out.print(_summary(report))
 
 
-def _table(report: CheckReport) -> Table:
-    table = Table(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
-    table.add_column("file", overflow="fold")
+def _table(report: CheckReport, width: int) -> Table:
+    # At 80 columns a file name must stay whole (it is what one copies), so
+    # the file column never wraps and the others are made of short words that
+    # fold between them: verdicts counted, not one line per constraint. k is
+    # not a column: it is the length of the independent set beside it.
+    table = Table(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, padding=(0, 1, 0, 0))
+    table.add_column("file", no_wrap=True)
     table.add_column("result")
-    table.add_column("k", justify="right")
     table.add_column("independent")
-    table.add_column("constraints and quasi-coordinates")
+    table.add_column("constraints")
     table.add_column("time", justify="right", no_wrap=True)
     for file in report.files:
         table.add_row(
             Text(printable(file.path)), _result(file, report.strict),
-            Text("" if file.k is None else str(file.k)), Text(printable(", ".join(file.independent))),
-            Text("\n".join(printable(f"{c.where}: {c.verdict}") for c in file.classifications)),
-            Text(f"{file.elapsed:.1f} s"),
+            Text(printable(", ".join(file.independent))),
+            Text("\n".join(map(printable, _classified(file)))), Text(f"{file.elapsed:.1f}s"),
         )
+    _fit(table, width)
     return table
+
+
+def _fit(table: Table, width: int) -> None:
+    """Narrow the widest wrapping columns first, never below their longest word.
+
+    Rich shares a shortage out in proportion, which cuts words (and headers)
+    it could have wrapped; here only whole words move to the next line.
+    """
+    cells = [[str(c) for c in (column.header, *column.cells)] for column in table.columns]
+    natural = [max(len(line) for cell in column for line in cell.splitlines() or [""]) for column in cells]
+    floor = [n if column.no_wrap else max((len(w) for cell in cells[i] for w in cell.split()), default=1)
+             for i, (column, n) in enumerate(zip(table.columns, natural))]
+    widths = list(natural)
+    excess = sum(widths) + 2 * (len(widths) - 1) - width  # a divider and a pad between columns
+    while excess > 0:
+        i = max(range(len(widths)), key=lambda j: (widths[j] - floor[j], widths[j]))
+        if widths[i] <= floor[i]:
+            break
+        widths[i] -= 1
+        excess -= 1
+    for column, w in zip(table.columns, widths):
+        column.width = w
+
+
+def _classified(file: FileReport) -> list[str]:
+    """``4 non-holonomic (4 rows, rank 3: ...)``, then ``s: not a coordinate`` per quasi-coordinate."""
+    verdicts: dict[str, int] = {}
+    for c in file.classifications:
+        if c.kind == "constraint":
+            verdicts[c.verdict] = verdicts.get(c.verdict, 0) + 1
+    lines = [", ".join(f"{n} {verdict}" for verdict, n in verdicts.items())] if verdicts else []
+    if file.dependent and lines:  # no verdicts when the check stopped before classifying
+        lines[0] += f" ({rank_note(sum(verdicts.values()), file.dependent)})"
+    lines += [f"{c.where.rsplit('.', 1)[-1]}: {c.verdict}" for c in file.classifications if c.kind != "constraint"]
+    return lines
 
 
 def _result(file: FileReport, strict: bool) -> Text:
@@ -53,8 +92,10 @@ def _result(file: FileReport, strict: bool) -> Text:
         parts.append(_count(len(file.errors), "error"))
     if file.warnings:
         parts.append(_count(len(file.warnings), "warning"))
+    if file.notes:
+        parts.append(_count(len(file.notes), "note"))
     style = "bold red" if file.failed(strict) else _STATUS_STYLE[status]
-    return Text(", ".join(parts) or "ok", style=style)
+    return Text(", ".join(parts if file.errors or file.warnings else ["ok", *parts]), style=style)
 
 
 def _count(n: int, word: str) -> str:

@@ -9,38 +9,38 @@ no traceback; any other exception is a bug in gacli and shows one.
 from __future__ import annotations
 
 import contextlib
-import enum
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
 from gacli import __version__
+from gacli.cli_help import Group, choice, example, formats
 
 app = typer.Typer(
     name="gacli",
-    help="Derive equations of motion by the Gibbs-Appell method.\n\n"
-    "Example: gacli derive systems/sphere_on_turntable.yaml",
+    cls=Group,
+    help="Derive equations of motion by the Gibbs-Appell method.",
+    epilog="gacli derive systems/sphere_on_turntable.yaml",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_show_locals=False,
     rich_markup_mode=None,
 )
 
-# Kept as literals (not read from gacli.emit.EMITTERS) so that --help does not
-# import the emitters; tests check the two lists agree.
-FORMATS = ("text", "latex", "python", "c", "fmu")
-Format = enum.Enum("Format", {name: name for name in FORMATS}, type=str)
-# Likewise gacli.simulate.METHODS, without importing SciPy.
+# Read from gacli.emit.EMITTERS (a light module: emitters load on first use),
+# so a new emitter is a new --format with no change here.
+FORMATS = formats()
+# gacli.simulate.METHODS, kept as a literal so that --help does not import SciPy;
+# a test checks the two agree.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
-Method = enum.Enum("Method", {m: m for m in METHODS}, type=str)
 
-SystemPath = Annotated[Path, typer.Argument(help="A system file (YAML).", dir_okay=False, exists=True)]
+SystemPath = Annotated[Path, typer.Argument(metavar="FILE", help="A system file (YAML).", dir_okay=False, exists=True)]
 # The same budget as gacli check's --timeout (gacli.budget); the literals are
 # here so that --help does not import SymPy. A test checks they agree.
 DEFAULT_TIMEOUT = 300.0
 Timeout = Annotated[float, typer.Option(
-    "--timeout", min=0, help="Seconds allowed for the whole command, past which it stops with "
+    "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command, past which it stops with "
     "'ran out of time in the step ...' (0: no limit).")]
 
 
@@ -59,7 +59,12 @@ def _boundary():
     except GacliError as exc:
         from gacli import console
 
-        console.error(str(exc))
+        # Several problems (gacli simulate's options) are one line each, not one line with \n in it.
+        problems = getattr(exc, "problems", ())
+        if len(problems) > 1:
+            console.error(str(exc).split("\n", 1)[0], problems)
+        else:
+            console.error(str(exc))
         raise typer.Exit(code=1) from None
     except MemoryError:
         # Outside a budget (which names the step), still one message, not a traceback.
@@ -113,41 +118,39 @@ def _main(
     """Derive equations of motion by the Gibbs-Appell method."""
 
 
-@app.command()
+@app.command(**example("gacli derive systems/sphere_on_turntable.yaml --format c --output build/"))
 def derive(
     file: SystemPath,
-    format: Annotated[Format, typer.Option("--format", "-f", help="Output form.")] = Format.text,
-    output: Annotated[
-        Optional[Path],
-        typer.Option("--output", "-o", help="Write here instead of stdout (a directory for C: NAME.h and NAME.c)."),
-    ] = None,
+    format: Annotated[str, typer.Option(
+        "--format", "-f", metavar="FORMAT", callback=choice("a format", formats),
+        help=f"Output form: {', '.join(FORMATS)}.")] = "text",
+    output: Annotated[Optional[Path], typer.Option(
+        "--output", "-o", metavar="PATH",
+        help="Write here instead of stdout (a directory for C: NAME.h and NAME.c).")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
-    """Derive the Gibbs-Appell equations of a system and print them.
-
-    Example: gacli derive systems/sphere_on_turntable.yaml --format c --output build/
-    """
+    """Derive the Gibbs-Appell equations of a system and print them."""
     from gacli import console
 
-    _derive_usage(format.value, output, steps, reactions)
+    _derive_usage(format, output, steps, reactions)
     with _boundary():
         with _budget(file, timeout) as state:
             derivation = _derive(file, state)
-            state(f"writing the {format.value} output")
-            if format.value == "text":
+            state(f"writing the {format} output")
+            if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
             else:
                 from gacli.api import emit
 
-                options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {"reactions": reactions}
-                if format.value == "fmu":
+                options = {"standalone": standalone, "steps": steps} if format == "latex" else {"reactions": reactions}
+                if format == "fmu":
                     options = {"note": console.note}
-                files = emit(derivation, format.value, **options)
+                files = emit(derivation, format, **options)
         # Printed once the work is done: running out of time never leaves half an output.
-        if format.value == "text":
+        if format == "text":
             console.sections(title, sections)
         elif output is None:
             for _, text in sorted(files.items()):
@@ -162,7 +165,7 @@ def derive(
 def _derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
     """Option combinations derive refuses, found before any work is done."""
     if format == "text" and output is not None:
-        raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
+        raise typer.BadParameter("--output needs a --format other than text", param_hint="--output")
     if format == "fmu" and output is None:
         raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
                                  param_hint="--output")
@@ -181,11 +184,12 @@ def _text_report(derivation, steps: bool, reactions: bool):
     return derivation.system.title or derivation.system.name, sections
 
 
-@app.command()
+@app.command(**example("gacli gibbs systems/particle_in_plane.yaml"))
 def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
-    """Print the Gibbs function G (its acceleration terms, eqs. 14.17 and 14.21).
+    """Print the Gibbs function G of a system.
 
-    Example: gacli gibbs systems/particle_in_plane.yaml
+    Only its acceleration terms, eqs. (14.17) and (14.21): the terms free of
+    accelerations play no part in the equations.
     """
     from gacli import console
     from gacli.report import gibbs_report
@@ -199,37 +203,35 @@ def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
 
 
 CHECK_FORMATS = ("text", "json", "github")
-CheckFormat = enum.Enum("CheckFormat", {name: name for name in CHECK_FORMATS}, type=str)
 
 
-@app.command()
+@app.command(**example("gacli check systems/ --strict --format github"))
 def check(
     paths: Annotated[
         list[str],
-        typer.Argument(metavar="PATH", help="Files, directories (searched for *.yaml, *.yml) or glob patterns."),
+        typer.Argument(metavar="PATH...", help="Files, directories (searched for *.yaml, *.yml) or glob patterns."),
     ],
-    format: Annotated[
-        CheckFormat, typer.Option("--format", "-f", help="text: a table; json: for machines; github: annotations.")
-    ] = CheckFormat.text,
+    format: Annotated[str, typer.Option(
+        "--format", "-f", metavar="FORMAT", callback=choice("a check format", lambda: CHECK_FORMATS),
+        help="text: a table; json: for machines; github: annotations.")] = "text",
     strict: Annotated[bool, typer.Option("--strict", help="Warnings fail too.")] = False,
     verify: Annotated[bool, typer.Option("--verify", help="Also check each derivation by the independent route.")] = False,
     timeout: Annotated[
-        float, typer.Option("--timeout", min=0, help="Seconds allowed per file (0: no limit).")
+        float, typer.Option("--timeout", min=0, metavar="SECONDS", help="Seconds allowed per file (0: no limit).")
     ] = 60.0,
 ) -> None:
-    """Check system files: format, expressions, ranks, derivation and the sanity of M.
+    """Check system files, as a gate in CI.
 
-    Also says which constraints are holonomic and which quasi-coordinates are
-    true coordinates. Exit 0 when every file passes, 1 when one has errors
-    (or warnings, with --strict), 2 for a usage error.
-
-    Example: gacli check systems/ --strict --format github
+    Checks the format, the expressions, the ranks, the derivation and the
+    sanity of M, and says which constraints are holonomic and which
+    quasi-coordinates are true coordinates. Exit 0 when every file passes, 1
+    when one has errors (or warnings, with --strict), 2 for a usage error.
     """
     from gacli.check import PathsError, check_paths, to_github, to_json
 
     with _boundary():
         try:
-            if format.value == "text":
+            if format == "text":
                 from gacli import check_console, console
 
                 with console.progress("checking") as step:
@@ -238,51 +240,62 @@ def check(
                 check_console.show(report)
             else:
                 report = check_paths(paths, timeout=timeout, strict=strict)
-                typer.echo(to_json(report) if format.value == "json" else to_github(report), nl=False)
+                typer.echo(to_json(report) if format == "json" else to_github(report), nl=False)
         except PathsError as exc:
             raise typer.BadParameter(str(exc), param_hint="PATH") from None
     raise typer.Exit(code=report.exit_code)
 
 
-@app.command()
+@app.command(**example("gacli schema > schema/gacli-system-1.schema.json"))
 def schema() -> None:
-    """Print the JSON Schema (draft 2020-12) of the system file format.
+    """Print the JSON Schema of the system file format.
 
-    Example: gacli schema > schema/gacli-system-1.schema.json
+    The schema is JSON Schema draft 2020-12, for editors and validators.
     """
     from gacli.file_schema import schema_text
 
     typer.echo(schema_text(), nl=False)
 
 
-@app.command()
+_SIMULATE_EXAMPLE = ('gacli simulate systems/sphere_on_turntable.yaml --function "Omega=2" '
+                     '--input "F_x=0,F_y=0,F_z=0,M_x=0,M_y=0,M_z=0" --init "dot(x)=0.1" --t-end 5')
+
+
+@app.command(**example(_SIMULATE_EXAMPLE))
 def simulate(
     file: SystemPath,
-    set_: Annotated[Optional[list[str]], typer.Option("--set", help='Parameter values, "M=1,a=0.1".')] = None,
-    init: Annotated[Optional[list[str]], typer.Option(help="Initial state by STATE name; others start at 0.")] = None,
-    input: Annotated[Optional[list[str]], typer.Option(help="Inputs as expressions in t, parameters, state.")] = None,
-    function: Annotated[Optional[list[str]], typer.Option(help='Free functions of time, "Omega=2+sin(t)".')] = None,
-    t_end: Annotated[float, typer.Option(help="End time.")] = 10.0,
-    method: Annotated[Method, typer.Option(help="solve_ivp method.")] = Method.DOP853,
-    rtol: Annotated[float, typer.Option(help="Relative tolerance.")] = 1e-9,
-    atol: Annotated[float, typer.Option(help="Absolute tolerance.")] = 1e-12,
-    points: Annotated[int, typer.Option(help="Evenly spaced output samples.")] = 1001,
-    csv: Annotated[Optional[Path], typer.Option(help="Write t and the state to this CSV file.")] = None,
-    plot: Annotated[Optional[Path], typer.Option(help="Draw to this .png or .svg file.")] = None,
-    show: Annotated[Optional[str], typer.Option(help="States drawn against time, as x,y.")] = None,
-    phase: Annotated[Optional[str], typer.Option(help="One state against another, as x,y.")] = None,
+    set_: Annotated[Optional[list[str]], typer.Option(
+        "--set", metavar="NAME=VALUE,...", help='Parameter values over the file\'s, "M=1,a=0.1".')] = None,
+    init: Annotated[Optional[list[str]], typer.Option(
+        metavar="STATE=VALUE,...", help='Initial state, "x=0.1,dot(y)=0"; others start at 0.')] = None,
+    input: Annotated[Optional[list[str]], typer.Option(
+        metavar="NAME=EXPR,...", help='Inputs as expressions in t, parameters and state, "F_x=0.1*sin(t)".')] = None,
+    function: Annotated[Optional[list[str]], typer.Option(
+        metavar="NAME=EXPR,...", help='Free functions of time, "Omega=2+sin(t)".')] = None,
+    t_end: Annotated[float, typer.Option(metavar="SECONDS", help="End time.")] = 10.0,
+    method: Annotated[str, typer.Option(
+        metavar="METHOD", callback=choice("a method", lambda: METHODS),
+        help=f"SciPy's solve_ivp method: {', '.join(METHODS)}.")] = "DOP853",
+    rtol: Annotated[float, typer.Option(metavar="NUMBER", help="Relative tolerance.")] = 1e-9,
+    atol: Annotated[float, typer.Option(metavar="NUMBER", help="Absolute tolerance.")] = 1e-12,
+    points: Annotated[int, typer.Option(metavar="N", help="Evenly spaced output samples.")] = 1001,
+    csv: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Write t and the state to this CSV file.")] = None,
+    plot: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Draw to this .png or .svg file.")] = None,
+    show: Annotated[Optional[str], typer.Option(metavar="STATE,...", help="States drawn against time, as x,y.")] = None,
+    phase: Annotated[Optional[str], typer.Option(metavar="STATE,STATE", help="One state against another, as x,y.")] = None,
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
-    """Integrate the equations of motion; report energy drift and constraint residuals.
+    """Integrate the equations of motion with SciPy.
 
-    Example: gacli simulate systems/sphere_on_turntable.yaml --function "Omega=2" --input "F_x=0,F_y=0,F_z=0,M_x=0,M_y=0,M_z=0" --init "dot(x)=0.1" --t-end 5
+    Reports the energy drift (when the model conserves energy) and the
+    residual of each constraint along the path; writes a CSV or a plot.
     """
     from gacli import simulate as sim
     from gacli import simulate_console
 
     with _boundary():
         spec = sim.spec_from_options(set=set_ or (), init=init or (), input=input or (), function=function or (),
-                                     show=show, phase=phase, t_end=t_end, method=method.value,
+                                     show=show, phase=phase, t_end=t_end, method=method,
                                      rtol=rtol, atol=atol, points=points)
         sim.require("scipy.integrate")
         if plot is not None:
@@ -306,18 +319,22 @@ def simulate(
         simulate_console.summary(result)
 
 
-@app.command()
+@app.command(**example('gacli linearize systems/rolling_disk.yaml --at "lean=0,dot(spin)=-5" --states "lean,dot(yaw),dot(lean)"'))
 def linearize(
     file: SystemPath,
-    at: Annotated[Optional[str], typer.Option(help='Operating point: state and input values, "roll=0,dot(wheel_R)=-15".')] = None,
-    set_: Annotated[Optional[str], typer.Option("--set", help='Parameter values over the file\'s, "g=9.81".')] = None,
-    states: Annotated[Optional[str], typer.Option(help="Keep these states (rows and columns of A), as lean,steer,dot(lean).")] = None,
+    at: Annotated[Optional[str], typer.Option(
+        metavar="NAME=VALUE,...", help='Operating point: state and input values, "lean=0,dot(spin)=-5".')] = None,
+    set_: Annotated[Optional[str], typer.Option(
+        "--set", metavar="NAME=VALUE,...", help='Parameter values over the file\'s, "g=9.81".')] = None,
+    states: Annotated[Optional[str], typer.Option(
+        metavar="STATE,...", help='Keep these states (rows and columns of A), "lean,dot(yaw),dot(lean)".')] = None,
     symbolic: Annotated[bool, typer.Option(help="A and B as expressions (small systems).")] = False,
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
-    """Linearize about an operating point: A, B and the eigenvalues of A.
+    """Linearize about an operating point.
 
-    Example: gacli linearize systems/cylinder_in_cylinder.yaml --states "theta,dot(theta)"
+    Prints A, B and the eigenvalues of A, numerically (or A and B
+    symbolically, with --symbolic).
     """
     from gacli import console
     from gacli import linearize as L
@@ -354,16 +371,17 @@ def _linearize_numeric(L, derivation, at: Optional[str], set_: Optional[str]):
     return L.linearize(derivation, point, overrides)
 
 
-@app.command()
+@app.command(**example("gacli verify systems/sphere_on_turntable.yaml --samples 5"))
 def verify(
     file: SystemPath,
-    samples: Annotated[int, typer.Option(min=1, help="Random admissible states to compare at.")] = 20,
-    tol: Annotated[float, typer.Option(help="Largest relative difference allowed.")] = 1e-9,
+    samples: Annotated[int, typer.Option(min=1, metavar="N", help="Random admissible states to compare at.")] = 20,
+    tol: Annotated[float, typer.Option(metavar="NUMBER", help="Largest relative difference allowed.")] = 1e-9,
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
-    """Check the derivation by an independent route: eq. (14.10) over all rates, with multipliers.
+    """Check a derivation by an independent route.
 
-    Example: gacli verify systems/sphere_on_turntable.yaml --samples 5
+    Eq. (14.10) over all the rates, with multipliers, compared with the
+    derivation at random admissible states.
     """
     from gacli import console
 

@@ -35,13 +35,16 @@ def stderr() -> Console:
 
 
 
+_SEVERITY_STYLE = {"error": "bold red", "warning": "bold yellow", "note": "bold cyan"}
+
+
 def diagnostics(items: Iterable[Diagnostic]) -> None:
     console = stderr()
     for d in items:
         line = Text()
         line.append(quoted(str(d.location)), style="bold")
         line.append(": ")
-        line.append(f"{d.severity}:", style="bold red" if d.severity == "error" else "bold yellow")
+        line.append(f"{d.severity}:", style=_SEVERITY_STYLE.get(d.severity, "bold yellow"))
         line.append(f" {quoted(d.where)}: " if d.where else " ")
         line.append(quoted(d.message))
         if d.hint:
@@ -49,10 +52,17 @@ def diagnostics(items: Iterable[Diagnostic]) -> None:
         console.print(line)
 
 
-def error(message: str) -> None:
+def error(message: str, details: Iterable[str] = ()) -> None:
+    """``error: message``, then each detail on a line of its own, indented.
+
+    Each part is escaped on its own: a newline inside one (quoted from a
+    file) stays ``\\n``, so no text can pass itself off as another line.
+    """
     text = Text()
     text.append("error:", style="bold red")
     text.append(f" {quoted(message)}")
+    for line in details:
+        text.append(f"\n  {quoted(line)}")
     stderr().print(text)
 
 

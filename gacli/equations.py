@@ -49,6 +49,17 @@ class Derivation:
     generalized_forces: sp.ImmutableMatrix
     kinematic_equations: tuple[tuple[str, sp.Expr], ...]
 
+    def __repr__(self) -> str:
+        from gacli.notebook import derivation_repr
+
+        return derivation_repr(self)
+
+    def _repr_latex_(self) -> str:
+        """Jupyter: the equations as ``gacli derive --format latex`` prints them (a summary when large)."""
+        from gacli.notebook import derivation_latex
+
+        return derivation_latex(self)
+
     @functools.cached_property
     def gibbs(self) -> sp.Expr:
         """G with its acceleration-free terms dropped (eqs. 14.17, 14.21); built on first use."""

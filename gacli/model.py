@@ -159,6 +159,14 @@ class System:
     def free_functions(self) -> tuple[Function, ...]:
         return tuple(f for f in self.functions if f.value is None)
 
+    def __repr__(self) -> str:
+        # One line: the dataclass repr would print every expression of the file.
+        counts = [(len(self.coordinates), "coordinate", "coordinates"),
+                  (len(self.quasi_coordinates), "quasi-coordinate", "quasi-coordinates"),
+                  (len(self.constraints), "constraint", "constraints"), (len(self.bodies), "body", "bodies")]
+        parts = ", ".join(f"{n} {one if n == 1 else many}" for n, one, many in counts)
+        return f"<System {self.name!r} from {self.path!r}: {parts}>"
+
     def declared(self, name: str) -> Declared | None:
         for group in (self.parameters, self.functions, self.inputs, self.coordinates, self.quasi_coordinates):
             for item in group:

@@ -24,16 +24,38 @@ class Section:
     lines: tuple[str, ...]
 
 
+def dependent_rows(d: Derivation) -> tuple[str, ...]:
+    """The constraint rows left out of l: rolling rows that say again what the others say.
+
+    ``gacli check`` lists every row it classifies; this is what lets it and
+    ``gacli derive`` agree on why l is smaller than the number of rows.
+    """
+    if d.rates.constraints_used == len(d.system.constraints):
+        return ()
+    from gacli.kinematics import relation_rows
+
+    kept = {where for where, _, _ in relation_rows(d.system)[0]}
+    return tuple(w for w in (f"constraints[{i}]" for i in range(len(d.system.constraints))) if w not in kept)
+
+
+def rank_note(rows: int, dependent: tuple[str, ...]) -> str:
+    """``4 rows, rank 3: constraints[3] repeats the others``, said alike by derive and check."""
+    verb = "repeats" if len(dependent) == 1 else "repeat"
+    return f"{rows} rows, rank {rows - len(dependent)}: {', '.join(dependent)} {verb} the others"
+
+
 def freedom(d: Derivation) -> Section:
     s = d.system
     n, p = len(s.coordinates), len(s.quasi_coordinates)
     dq = sum(1 for q in s.quasi_coordinates if q.differential is not None)
     ell = d.rates.constraints_used
     how = "chosen automatically" if d.rates.chosen_automatically else "as given in the file"
+    dependent = dependent_rows(d)
+    why = f" (the rolling contacts give {rank_note(len(s.constraints), dependent)})" if dependent else ""
     return Section("Degrees of freedom", (
         f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k}",
         f"n = {n} coordinates, p = {p} quasi-coordinates (d = {dq} defined by a differential), "
-        f"l = {ell} constraints",
+        f"l = {ell} constraints{why}",
         f"independent: {', '.join(d.independent)} ({how})",
     ))
 

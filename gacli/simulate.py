@@ -53,6 +53,7 @@ from gacli.errors import GacliError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import Name, ParseError, Rate, parse
 from gacli.graph import free_symbols, is_large, shared_subexpressions
+from gacli.suggest import closest_state
 
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 DEFAULT_METHOD = "DOP853"
@@ -643,8 +644,8 @@ class _Values:
         if isinstance(node, Name) and self._kind(base) == "a quasi-coordinate":
             return ": a quasi-coordinate has a rate but no value"
         written = S.rate_name(base, getattr(node, "order", 0))
-        close = difflib.get_close_matches(written, self.state, n=1)
-        return f" (did you mean '{close[0]}'?)" if close else ""
+        close = closest_state(written, self.state)
+        return f" (did you mean '{close}'?)" if close else ""
 
 
 # -- energy and its conservation ----------------------------------------------------

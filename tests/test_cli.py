@@ -29,7 +29,7 @@ def test_version():
 def test_every_command_help_has_a_working_example(command):
     result = run(command, "--help")
     assert result.exit_code == 0
-    assert "Example: gacli " + command in result.output
+    assert "Example:\n  gacli " + command in result.output
 
 
 def test_derive_prints_the_chapter_steps():

@@ -1,0 +1,81 @@
+"""How the command line presents itself in ``--help`` and in usage errors.
+
+Typer shows a parameter's Python type beside it (``{file}``, ``<list[str]>``,
+``<float range>``), which means nothing to someone reading a command's help;
+here every argument shows only its metavar, every command ends with its
+example, and a bad choice gets one plain sentence listing the choices.
+Nothing here imports SymPy: ``gacli --help`` stays fast.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import typer
+from typer.core import TyperArgument, TyperCommand, TyperGroup
+
+
+class _PlainArgument(TyperArgument):
+    """An argument shown by its metavar alone, in the usage line and in the list."""
+
+    def _usage_display_name(self) -> str:
+        # Typer writes a required argument as {NAME}, which reads as a set.
+        name = self.metavar or self.name.upper()
+        return name + ("..." if self.nargs != 1 and not name.endswith("...") else "")
+
+    def display_type_rich(self, ctx) -> None:
+        return None
+
+    def display_type(self, ctx) -> None:
+        return None
+
+
+class _ExampleLast:
+    def format_epilog(self, ctx, formatter) -> None:
+        # Click rewraps an epilog to the terminal width, which would break a long
+        # example across lines; it is written as is, so it can be copied.
+        if self.epilog:
+            formatter.write_paragraph()
+            formatter.write_text("Example:")
+            with formatter.indentation():
+                formatter.write(" " * formatter.current_indent + self.epilog + "\n")
+
+
+class Group(_ExampleLast, TyperGroup):
+    """``gacli`` itself: its example, too, comes last."""
+
+
+class Command(_ExampleLast, TyperCommand):
+    """A gacli command: plain argument names; the example (the epilog) printed last."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        for param in self.params:
+            if type(param) is TyperArgument:
+                param.__class__ = _PlainArgument
+
+
+def example(command_line: str) -> dict:
+    """The keyword arguments of ``app.command`` for a command whose help ends with ``command_line``."""
+    return {"cls": Command, "epilog": command_line}
+
+
+def choice(what: str, choices: Callable[[], Sequence[str]]) -> Callable:
+    """A callback that accepts one of ``choices()`` and otherwise says which there are.
+
+    The choices are read when the option is used, so a format added to
+    :data:`gacli.emit.EMITTERS` is accepted without a change here.
+    """
+    def check(value: str | None) -> str | None:
+        allowed = sorted(choices())
+        if value is None or value in allowed:
+            return value
+        raise typer.BadParameter(f"'{value}' is not {what}; choose one of: {', '.join(allowed)}")
+    return check
+
+
+def formats() -> tuple[str, ...]:
+    """``gacli derive --format`` choices: text, then every emitter."""
+    from gacli.emit import EMITTERS
+
+    return ("text", *sorted(EMITTERS))
