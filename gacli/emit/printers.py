@@ -194,14 +194,15 @@ CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
-                equations: Sequence[tuple[str, sp.Expr]]) -> tuple[Block, object]:
+                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX) -> tuple[Block, object]:
     """CSE over the equations, in their order, then print; returns the block and the printer.
 
     The printer is returned so that callers can read what the code needs
-    (``imports()``, ``includes()``).
+    (``imports()``, ``includes()``). Temporaries are named ``<prefix>0``,
+    ``<prefix>1`` ...: the prefix must be one that no name in ``names`` has.
     """
     exprs = [as_expr(expr) for _, expr in equations]
-    names_of_temporaries = sp.numbered_symbols(CSE_PREFIX)
+    names_of_temporaries = sp.numbered_symbols(prefix)
     if not any(is_large(e) for e in exprs):
         replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
     else:
