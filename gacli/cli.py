@@ -29,7 +29,7 @@ app = typer.Typer(
 
 # Kept as literals (not read from gacli.emit.EMITTERS) so that --help does not
 # import the emitters; tests check the two lists agree.
-FORMATS = ("text", "latex", "python", "c")
+FORMATS = ("text", "latex", "python", "c", "octave", "jax")
 Format = enum.Enum("Format", {name: name for name in FORMATS}, type=str)
 # Likewise gacli.simulate.METHODS, without importing SciPy.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")

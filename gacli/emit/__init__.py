@@ -6,7 +6,7 @@ files. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
 imported on first use, so that ``gacli check`` does not pay for them.
 
 >>> sorted(EMITTERS)
-['c', 'latex', 'python']
+['c', 'jax', 'latex', 'octave', 'python']
 """
 
 from __future__ import annotations
@@ -43,13 +43,29 @@ def emit_latex(derivation: Derivation, **options) -> dict[str, str]:
     return emit(derivation, **options)
 
 
+def emit_octave(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>_rhs.m": ..., ...}``, Octave/MATLAB function files: see :mod:`gacli.emit.octave`."""
+    from gacli.emit.octave import emit_octave as emit
+
+    return emit(derivation, **options)
+
+
+def emit_jax(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>_jax.py": text}``, a ``jax.numpy`` module: see :mod:`gacli.emit.jax`."""
+    from gacli.emit.jax import emit_jax as emit
+
+    return emit(derivation, **options)
+
+
 EMITTERS: dict[str, Emitter] = {
     "python": emit_python,
     "c": emit_c,
     "latex": emit_latex,
+    "octave": emit_octave,
+    "jax": emit_jax,
 }
 
-__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_latex", "emit_python"]
+__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
 
 
 class _CallablePackage(types.ModuleType):

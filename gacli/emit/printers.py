@@ -25,6 +25,8 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.codeprinter import PrintMethodNotImplementedError
+from sympy.printing.numpy import JaxPrinter
+from sympy.printing.octave import OctaveCodePrinter
 from sympy.printing.pycode import PythonCodePrinter
 
 from gacli.coerce import as_expr
@@ -33,6 +35,7 @@ from gacli.errors import EmitError
 
 # What generated code may depend on.
 PYTHON_MODULES = frozenset({"math", "numpy"})
+JAX_MODULES = frozenset({"jax", "jax.numpy"})
 C_HEADERS = frozenset({"math.h"})
 
 
@@ -151,6 +154,36 @@ class GacliCPrinter(_Numbers, _NamedSymbols, C99CodePrinter):
         if extra or self.macros:
             raise EmitError(f"the generated C would need {', '.join(extra + sorted(self.macros))}")
         return headers
+
+
+class GacliOctavePrinter(_Numbers, _NamedSymbols, OctaveCodePrinter):
+    """GNU Octave and MATLAB code for scalar expressions (SymPy prints the element-wise operators)."""
+
+    language = "Octave"
+    infinity = "Inf"
+
+    def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
+        super().__init__({**(settings or {}), "strict": True})
+        self._init_names(names)
+
+
+class GacliJaxPrinter(_Numbers, _NamedSymbols, JaxPrinter):
+    """``jax.numpy`` code for scalar expressions: traceable by jit, vmap and grad."""
+
+    language = "JAX"
+    infinity = "jax.numpy.inf"
+
+    def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
+        super().__init__({"fully_qualified_modules": True, **(settings or {}), "strict": True})
+        self._init_names(names)
+
+    def imports(self) -> list[str]:
+        """The modules the printed code uses, sorted; only jax and jax.numpy are allowed."""
+        modules = sorted(self.module_imports)
+        extra = [m for m in modules if m not in JAX_MODULES]
+        if extra:
+            raise EmitError(f"the generated JAX would need {', '.join(extra)}")
+        return modules
 
 
 def print_code(printer, expr: sp.Expr, where: Callable[[sp.Basic], str] | str) -> str:

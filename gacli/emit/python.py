@@ -123,8 +123,8 @@ def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str,
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
         name=lay.system, k=lay.k, imports="import math\n\nimport numpy",
-        state=_tuple(lay.state), parameters=_tuple(lay.parameters), inputs=_tuple(lay.r),
-        defaults=_dict(lay.defaults), functions="".join(functions),
+        state=python_tuple(lay.state), parameters=python_tuple(lay.parameters), inputs=python_tuple(lay.r),
+        defaults=python_dict(lay.defaults), functions="".join(functions),
     )
     return {f"{lay.system}.py": text}
 
@@ -245,10 +245,10 @@ def _targets(names: Sequence[str]) -> str:
     return f"[{names[0]}]" if len(names) == 1 else ", ".join(names)
 
 
-def _tuple(names: Sequence[str]) -> str:
+def python_tuple(names: Sequence[str]) -> str:
     items = [json.dumps(n) for n in names]
     return f"({items[0]},)" if len(items) == 1 else "(" + ", ".join(items) + ")"
 
 
-def _dict(values: dict[str, float]) -> str:
+def python_dict(values: dict[str, float]) -> str:
     return "{" + ", ".join(f"{json.dumps(n)}: {v!r}" for n, v in values.items()) + "}"
