@@ -117,3 +117,30 @@ def test_no_python_branch_on_values():
     ((_, text),) = emit_jax(derivation("sphere_on_turntable")).items()
     tests = [ast.unparse(n.test) for n in ast.walk(ast.parse(text)) if isinstance(n, (ast.If, ast.IfExp, ast.While))]
     assert tests and set(tests) == {"callable(r)"}
+
+
+def test_readme_example_runs(tmp_path):
+    """The README's JAX example: the batch's shape, and its slope against the NumPy module's central difference."""
+    import subprocess
+    import sys
+
+    from test_emit_octave import readme_block
+
+    d = derivation("rolling_disk")
+    ((name, text),) = emit_jax(d).items()
+    (tmp_path / name).write_text(text, encoding="utf-8")
+    (tmp_path / "example.py").write_text(readme_block("python", "jax.vmap"), encoding="utf-8")
+    result = subprocess.run([sys.executable, "example.py"], capture_output=True, text=True, cwd=tmp_path, timeout=300)
+    assert result.returncode == 0, result.stderr
+    shape, slope = result.stdout.rsplit(")", 1)
+    assert shape + ")" == f"(10000, {len(d.state)})"
+    (tmp_path / "numpy").mkdir()
+    reference = write_python(d, tmp_path / "numpy")
+    state = np.asarray(jax.random.uniform(jax.random.key(0), (10_000, len(d.state)), minval=0.3, maxval=1.2)[0])
+    p = np.array([reference.DEFAULTS[n] for n in reference.PARAMETERS])
+    g, lean, h = reference.PARAMETERS.index("g"), reference.STATE.index("dot(lean)"), 1e-5
+    up, down = p.copy(), p.copy()
+    up[g] += h
+    down[g] -= h
+    difference = (reference.rhs(0.0, state, up)[lean] - reference.rhs(0.0, state, down)[lean]) / (2 * h)
+    assert abs(float(slope) - difference) <= 1e-6 * max(1.0, abs(difference))

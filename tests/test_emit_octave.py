@@ -162,3 +162,29 @@ def test_reactions_are_refused():
 
     with pytest.raises(EmitError, match="Python and C only"):
         emit_octave(derivation("cylinder_in_cylinder"), reactions=True)
+
+
+def readme_block(language: str, marker: str) -> str:
+    """The README's fenced ``language`` block that contains ``marker``."""
+    from conftest import ROOT
+
+    blocks = re.findall(rf"```{language}\n(.*?)```", (ROOT / "README.md").read_text(encoding="utf-8"), flags=re.S)
+    (block,) = [b for b in blocks if marker in b]
+    return block
+
+
+def test_readme_example_runs_and_rolls_on_the_circle(tmp_path):
+    """The README's ode45 example, against the closed form of test_generated_numeric's circle (eq. 14.30)."""
+    octave = require_tool("octave-cli")
+    build = tmp_path / "build"
+    build.mkdir()
+    for file_name, text in EMITTERS["octave"](derivation("sphere_on_turntable")).items():
+        (build / file_name).write_text(text, encoding="utf-8")
+    (tmp_path / "readme_example.m").write_text(readme_block("matlab", "ode45"), encoding="utf-8")
+    result = subprocess.run([octave, "--no-gui", "--norc", "--quiet", "--eval", f"cd('{tmp_path}'); readme_example"],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    x, y = (float(v) for v in re.fullmatch(r"x = (\S+), y = (\S+)\n", result.stdout).groups())
+    omega, w0 = 2 * 2.0 / 7, 0.1
+    z = w0 * (np.exp(1j * omega * 5.0) - 1) / (1j * omega)
+    assert abs(x - z.real) <= 1e-4 and abs(y - z.imag) <= 1e-4
