@@ -14,7 +14,8 @@ The code is C99 with no allocation, no globals and nothing beyond
 ``<math.h>``, and compiles cleanly with ``-std=c99 -Wall -Wextra -Werror
 -pedantic``: unused arguments are cast to void, π is a literal (``M_PI`` is
 not C99). Each function shares its common subexpressions; ``rhs`` fills a
-local ``double M[k*k]`` and solves M u' = F in place by a Cholesky
+local ``double M[k*k]`` (zero-filled first when M has zero entries: only the
+nonzero ones are computed) and solves M u' = F in place by a Cholesky
 factorization written as loops for the fixed size k.
 """
 
