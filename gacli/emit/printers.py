@@ -1,9 +1,9 @@
-"""SymPy code printers for gacli's generated Python and C.
+"""SymPy code printers for gacli's generated Python, C, Octave and JAX.
 
-Both printers take the map symbol → code name in ``__init__`` (see
-:mod:`gacli.emit.naming`) and print every symbol through it, so that
-``dot(q_z)`` reads ``dot_q_z``. They keep SymPy's ``strict`` mode: a node
-without a rendering raises :class:`UnsupportedNode` (an
+Each subclasses SymPy's printer for its language. They all take the map
+symbol → code name in ``__init__`` (see :mod:`gacli.emit.naming`) and
+print every symbol through it, so that ``dot(q_z)`` reads ``dot_q_z``.
+They keep SymPy's ``strict`` mode: a node without a rendering raises :class:`UnsupportedNode` (an
 :class:`~gacli.errors.EmitError` that names the node's type) instead of
 leaving a comment in the code; :func:`print_code` adds the equation it
 came from.
