@@ -29,7 +29,7 @@ app = typer.Typer(
 
 # Kept as literals (not read from gacli.emit.EMITTERS) so that --help does not
 # import the emitters; tests check the two lists agree.
-FORMATS = ("text", "latex", "python", "c", "octave", "jax")
+FORMATS = ("text", "latex", "python", "c", "fmu", "octave", "jax")
 Format = enum.Enum("Format", {name: name for name in FORMATS}, type=str)
 # Likewise gacli.simulate.METHODS, without importing SciPy.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -143,6 +143,8 @@ def derive(
                 from gacli.api import emit
 
                 options = {"standalone": standalone, "steps": steps} if format.value == "latex" else {"reactions": reactions}
+                if format.value == "fmu":
+                    options = {"note": console.note}
                 files = emit(derivation, format.value, **options)
         # Printed once the work is done: running out of time never leaves half an output.
         if format.value == "text":
@@ -161,7 +163,10 @@ def _derive_usage(format: str, output: Optional[Path], steps: bool, reactions: b
     """Option combinations derive refuses, found before any work is done."""
     if format == "text" and output is not None:
         raise typer.BadParameter("--output needs --format latex, python or c", param_hint="--output")
-    if reactions and format == "latex":
+    if format == "fmu" and output is None:
+        raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
+                                 param_hint="--output")
+    if reactions and format in ("latex", "fmu"):
         raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
     if steps and format not in ("text", "latex"):
         raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")

@@ -27,7 +27,7 @@ from gacli.canonical import product as canonical_product
 from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
-from gacli.kinematics import BodyMotion, Rates, body_motions, product, solve_rates
+from gacli.kinematics import BodyMotion, Rates, body_motions, motion_velocity, product, solve_rates
 from gacli import trig
 from gacli.model import System
 
@@ -162,7 +162,6 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates, Q: s
     bodies gives entries with O(n) terms rather than O(n²).
     """
     k = rates.k
-    u = sp.Matrix(rates.speeds)
     symmetric = all(m.angular is None or _is_symmetric(m.body.inertia) for m in motions)
     terms = _Terms()
     mass_terms: dict[tuple[int, int], dict] = {}
@@ -174,9 +173,9 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates, Q: s
         terms.add_linear(rest_terms, V, [m * a for a in motion.linear.acceleration_rest])
         if motion.angular is not None:
             W, I = motion.angular.partials, motion.body.inertia
-            # kinematics.product, not W * u: SymPy's matrix product multiplies out the zero
-            # entries of W and I and builds each sum pairwise.
-            w = product(W, u) + motion.angular.velocity0
+            # From W's nonzero entries: SymPy's matrix product multiplies out the zero
+            # entries of W and builds each sum pairwise.
+            w = sp.Matrix(motion_velocity(motion.angular, rates.speeds))
             terms.add_quadratic(mass_terms, W, I, symmetric)
             # Kept whole: the angular terms of different bodies rarely coincide, and splitting
             # I α + ω × Iω would undo the factoring that keeps it small.
@@ -253,11 +252,13 @@ class _Terms:
         With a symmetric C (every mass matrix m·1 and inertia matrix), Pᵀ C P is
         symmetric: only i ≥ j is formed and the caller mirrors it.
         """
-        rows = P.tolist()  # plain lists: matrix indexing is slow
         C = C.tolist() if isinstance(C, sp.MatrixBase) else C
-        nonzero = [[(a, row[i]) for a, row in enumerate(rows) if row[i] != 0] for i in range(P.cols)]
-        # Only the columns this body moves: a particle of a wide system has one of k.
-        moved = [i for i in range(P.cols) if nonzero[i]]
+        # Only the columns this body moves, read from the nonzero entries: a particle
+        # of a wide system moves one of k, and a scan of every entry would cost k per body.
+        nonzero: dict[int, list[tuple[int, sp.Expr]]] = {}
+        for (a, i), p_ai in sorted(P.todok().items()):
+            nonzero.setdefault(i, []).append((a, p_ai))
+        moved = sorted(nonzero)
         for i in moved:
             for j in moved:
                 if lower_only and j > i:
@@ -270,14 +271,16 @@ class _Terms:
 
     def add_linear(self, entries, P: sp.Matrix, g, split: bool = True) -> None:
         """Add the terms of (Pᵀ g)_s, g split into its terms so that equal products share their factors."""
-        for row, g_a in zip(P.tolist(), g):
+        rows: dict[int, list[tuple[int, sp.Expr]]] = {}
+        for (a, s), p_as in sorted(P.todok().items()):
+            rows.setdefault(a, []).append((s, p_as))
+        for a, g_a in enumerate(g):
             if g_a == 0:
                 continue
             terms = sp.Add.make_args(g_a) if split else (g_a,)
-            for s, p_as in enumerate(row):
-                if p_as != 0:
-                    for term in terms:
-                        self.add(entries[s], p_as, term, sp.S.One)
+            for s, p_as in rows.get(a, ()):
+                for term in terms:
+                    self.add(entries[s], p_as, term, sp.S.One)
 
 
 def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:

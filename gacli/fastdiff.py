@@ -133,10 +133,17 @@ def jacobian_rows(exprs: Iterable[sp.Expr], symbols: Sequence[sp.Symbol]) -> lis
     """:func:`jacobian` as a list of rows (no SymPy matrix to build)."""
     exprs = [as_expr(e) for e in exprs]
     free = _symbols_below(exprs, frozenset(symbols))
+    present = frozenset().union(*(free[e] for e in exprs))
+    zeros = [_ZERO] * len(exprs)
     columns = []
     for s in symbols:
+        # A wide system's point depends on one coordinate of hundreds: a walk
+        # per absent symbol would make the Jacobians of n points cost n².
+        if s not in present:
+            columns.append(zeros)
+            continue
         partial = Differentiator({s: sp.S.One}, free=free)
-        columns.append([partial(e) for e in exprs])
+        columns.append([partial(e) if s in free[e] else _ZERO for e in exprs])
     return [list(row) for row in zip(*columns)] if columns else [[] for _ in exprs]
 
 

@@ -16,7 +16,7 @@ from gacli import symbols as S
 from gacli import trig
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
-from gacli.kinematics import BodyMotion, Rates, point_partials, product, product_rows
+from gacli.kinematics import BodyMotion, Rates, product_rows
 from gacli.model import System
 
 
@@ -39,8 +39,12 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
 
 def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:
     """F·V_s of each force, one list per force."""
-    # Vᵀ F by kinematics.product, which skips zeros: a force on one particle of many touches one Q_s.
-    return [list(product(point_partials(force.point, system, rates).T, sp.Matrix(force.vector)))
+    coords = [c.name for c in system.coordinates]
+    values, beta = [S.value(c) for c in coords], rates.row_lists(coords)[0]
+    # Fᵀ (J β), J β being the point's partial velocities (eq. 14.8), by product_rows,
+    # which skips zeros: a force on one particle of many touches one Q_s.
+    return [product_rows([list(force.vector)], product_rows(jacobian_rows(force.point, values), beta, rates.k),
+                         rates.k)[0]
             for force in system.forces]
 
 

@@ -13,7 +13,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli import trig
-from gacli.kinematics import BodyMotion, Rates, configuration_chain, product
+from gacli.kinematics import BodyMotion, Rates, configuration_chain, motion_velocity
 from gacli.model import System
 
 
@@ -30,24 +30,24 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
     Accelerations are differentiated afresh from the velocities (not taken
     from the split V u̇ + a_rest), so G checks the direct route.
     """
-    chain = acceleration_chain(system, rates)
+    # One d/dt for all bodies: a differentiator is built from the whole chain,
+    # so one per body would cost n² for n bodies.
+    d_dt = S.time_differentiator(acceleration_chain(system, rates))
     # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
-    G = sp.Add(*[trig.reduce(_body_gibbs(motion, rates, chain)) for motion in motions])
+    G = sp.Add(*[trig.reduce(_body_gibbs(motion, rates, d_dt)) for motion in motions])
     if whole:
         return G
     return G - G.xreplace({a: 0 for a in rates.speed_rates})
 
 
-def _body_gibbs(motion: BodyMotion, rates: Rates, chain) -> sp.Expr:
-    u = sp.Matrix(rates.speeds)
-    # kinematics.product skips the zero columns: a body of a wide system moves few of the k speeds.
-    v = product(motion.linear.partials, u) + motion.linear.velocity0
-    a = v.applyfunc(lambda e: trig.reduce(S.time_derivative(e, chain)))
+def _body_gibbs(motion: BodyMotion, rates: Rates, d_dt) -> sp.Expr:
+    v = sp.Matrix(motion_velocity(motion.linear, rates.speeds))
+    a = v.applyfunc(lambda e: trig.reduce(d_dt(e)))
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:
         I = motion.body.inertia
-        w = product(motion.angular.partials, u) + motion.angular.velocity0
-        alpha = w.applyfunc(lambda e: trig.reduce(S.time_derivative(e, chain)))
+        w = sp.Matrix(motion_velocity(motion.angular, rates.speeds))
+        alpha = w.applyfunc(lambda e: trig.reduce(d_dt(e)))
         G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
     return G
 

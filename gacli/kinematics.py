@@ -64,7 +64,7 @@ class Rates:
 
     def rate(self, name: str) -> sp.Expr:
         i = self._index[name]
-        return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if b != 0], self._beta0_column[i])
+        return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if _nonzero(b)], self._beta0_column[i])
 
     def row_lists(self, names) -> tuple[list[tuple[sp.Expr, ...]], list[tuple[sp.Expr]]]:
         """The rows of β and β₀ for ``names``, for the list arithmetic of :func:`product_rows`."""
@@ -365,28 +365,67 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     return gamma
 
 
-def point_motion(position, system: System, rates: Rates, gamma=None, J=None, differentiate=None) -> Motion:
+@dataclass(frozen=True)
+class MotionContext:
+    """What every body's motion needs of the system, made once for all bodies.
+
+    Made per body, these lists and maps cost n² for n bodies (each has an
+    entry per coordinate or rate), the steepest part of a wide derivation.
+    """
+
+    coordinates: tuple[str, ...]
+    coordinate_values: tuple[sp.Symbol, ...]
+    coordinate_rates: tuple[sp.Symbol, ...]
+    coordinate_gamma: tuple[sp.Expr, ...]
+    gamma: dict[str, sp.Expr]
+    rate_symbols: tuple[sp.Symbol, ...]  # dot(r) for every name of ``rates``, in order
+    differentiate: object  # d/dt over the rates as symbols (rate_symbols_chain), memo shared by bodies
+    dependent: dict[sp.Symbol, sp.Expr]  # dot(r) → β u + β₀ for the dependent rates
+
+
+def motion_context(system: System, rates: Rates) -> MotionContext:
+    coords = tuple(c.name for c in system.coordinates)
+    gamma = dependent_acceleration_rest(system, rates)
+    return MotionContext(
+        coords, tuple(S.value(c) for c in coords), tuple(S.rate(c) for c in coords),
+        tuple(gamma[c] for c in coords), gamma, tuple(S.rate(n) for n in rates.names),
+        S.time_differentiator(rate_symbols_chain(system)),
+        {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent})
+
+
+def point_motion(position, system: System, rates: Rates, context: MotionContext | None = None, J=None) -> Motion:
     """v = J β u + (J β₀ + ∂r/∂t); a = J β u̇ + (J γ + J̇ q̇ + ...) (eqs. 14.6, 14.14).
 
     ``J`` is ∂r/∂q when the caller has it (see :func:`body_motions`).
     """
-    coords = [c.name for c in system.coordinates]
+    context = context or motion_context(system, rates)
     # Lists, not SymPy matrices, in between: at a few entries per body the
     # matrices' construction costs more than the arithmetic.
-    rows = J if J is not None else jacobian_rows(position, [S.value(c) for c in coords])
-    b, b0 = rates.row_lists(coords)
+    rows = J if J is not None else jacobian_rows(position, context.coordinate_values)
+    b, b0 = rates.row_lists(context.coordinates)
     moving = S.time_differentiator(function_chain(system))
     explicit = [moving(e) if _moves(e, system) else sp.S.Zero for e in position]
-    gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    qdot = _column([S.rate(c) for c in coords])
-    accelerations = _column([gamma[c] for c in coords])
-    velocity_symbols = [_dot(row, qdot) + e for row, e in zip(rows, explicit)]
-    rest = [_dot(row, accelerations) + d
-            for row, d in zip(rows, _rest_of_derivative(velocity_symbols, system, rates, differentiate))]
+    velocity_symbols = [_dot(row, context.coordinate_rates) + e for row, e in zip(rows, explicit)]
+    rest = [_dot(row, context.coordinate_gamma) + d
+            for row, d in zip(rows, _rest_of_derivative(velocity_symbols, context))]
     velocity0 = [v + e for (v,), e in zip(product_rows(rows, b0, 1), explicit)]
-    partials = [e for row in product_rows(rows, b, rates.k) for e in row]
-    n = len(position)
-    return Motion(sp.ImmutableMatrix(n, rates.k, partials), sp.ImmutableMatrix(n, 1, velocity0),
+    return _motion(product_rows(rows, b, rates.k), velocity0, rest)
+
+
+def motion_velocity(motion: Motion, speeds: Sequence[sp.Symbol]) -> list[sp.Expr]:
+    """partials · u + velocity0, from the nonzero partials only (a body of a wide system moves few speeds)."""
+    terms: list[list[sp.Expr]] = [[] for _ in range(motion.partials.rows)]
+    for (i, j), p in sorted(motion.partials.todok().items()):
+        terms[i].append(p * speeds[j])
+    return [sp.Add(*t, v0) for t, v0 in zip(terms, motion.velocity0)]
+
+
+def _motion(partials: list[list[sp.Expr]], velocity0: list[sp.Expr], rest: list[sp.Expr]) -> Motion:
+    # Sparse partials: a body of a wide system moves few of the k speeds, and a
+    # dense matrix per body would cost k entries each.
+    n, k = len(partials), len(partials[0]) if partials else 0
+    entries = {(i, j): e for i, row in enumerate(partials) for j, e in enumerate(row) if _nonzero(e)}
+    return Motion(sp.ImmutableSparseMatrix(n, k, entries), sp.ImmutableMatrix(n, 1, velocity0),
                   sp.ImmutableMatrix(n, 1, rest))
 
 
@@ -395,29 +434,28 @@ def _moves(expr: sp.Expr, system: System) -> bool:
     return bool(system.free_functions) or S.T in expr.free_symbols
 
 
-def _column(entries: list[sp.Expr]) -> list[tuple[int, sp.Expr]]:
-    """A column as _dot takes it: (index, entry) of the nonzero entries."""
-    return [(r, e) for r, e in enumerate(entries) if e != 0]
+def _nonzero(e) -> bool:
+    # The identity test first: S.Zero is a singleton, and SymPy's == costs far more.
+    return e is not _ZERO and e != 0
 
 
-def rotation_motion(rotation, system: System, rates: Rates, gamma=None, differentiate=None) -> Motion:
+def _dot(row: Sequence[sp.Expr], column: Sequence[sp.Expr]) -> sp.Expr:
+    """Σ row_r column_r over the nonzero pairs."""
+    return sp.Add(*[a * c for a, c in zip(row, column) if _nonzero(a) and _nonzero(c)])
+
+
+def rotation_motion(rotation, system: System, rates: Rates, context: MotionContext | None = None) -> Motion:
     """ω = W β u + (W β₀ + W₀) from the rotation forms; α = W β u̇ + (W γ + Ẇ ṙ + Ẇ₀)."""
-    names = list(rates.names)
-    W = sp.Matrix([[form.coefficient(n) for n in names] for form in rotation])
-    W0 = sp.Matrix([form.dt for form in rotation])
-    omega_symbols = product(W, sp.Matrix([S.rate(n) for n in names])) + W0
-    gamma = gamma if gamma is not None else dependent_acceleration_rest(system, rates)
-    derivative = _rest_of_derivative(omega_symbols, system, rates, differentiate)
-    rest = product(W, sp.Matrix([gamma[n] for n in names])) + sp.Matrix(derivative)
-    return Motion(sp.ImmutableMatrix(product(W, rates.beta)), sp.ImmutableMatrix(product(W, rates.beta0) + W0),
-                  sp.ImmutableMatrix(rest))
-
-
-def point_partials(position, system: System, rates: Rates) -> sp.Matrix:
-    """The partial velocities J β of a point (the α_rs of eq. 14.6)."""
-    coords = [c.name for c in system.coordinates]
-    J = jacobian_rows(position, [S.value(c) for c in coords])
-    return sp.Matrix(product_rows(J, rates.row_lists(coords)[0], rates.k))
+    context = context or motion_context(system, rates)
+    names = rates.names
+    W = [[c.get(n, _ZERO) for n in names] for c in (dict(form.coefficients) for form in rotation)]
+    W0 = [form.dt for form in rotation]
+    omega_symbols = [_dot(row, context.rate_symbols) + w0 for row, w0 in zip(W, W0)]
+    gamma = [context.gamma[n] for n in names]
+    rest = [_dot(row, gamma) + d for row, d in zip(W, _rest_of_derivative(omega_symbols, context))]
+    b, b0 = rates.row_lists(names)
+    velocity0 = [v + w0 for (v,), w0 in zip(product_rows(W, b0, 1), W0)]
+    return _motion(product_rows(W, b, rates.k), velocity0, rest)
 
 
 def product(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
@@ -459,37 +497,25 @@ def product_rows(rows: Sequence[Sequence[sp.Expr]], b: Sequence[Sequence[sp.Expr
     return out
 
 
-def _dot(row: list[sp.Expr], column: list[tuple[int, sp.Expr]]) -> sp.Expr:
-    if len(column) == 1 and column[0][1] == 1:
-        return row[column[0][0]]
-    return sp.Add(*[row[r] * b for r, b in column if row[r] != 0])
-
-
-def _rest_of_derivative(vector, system: System, rates: Rates, differentiate=None) -> list[sp.Expr]:
+def _rest_of_derivative(vector, context: MotionContext) -> list[sp.Expr]:
     """d/dt of expressions linear in the rates, without their r̈ terms, the rates then put as β u + β₀.
 
-    ``differentiate`` is a d/dt over the rates as symbols (``rate_symbols_chain``)
-    that the caller shares between bodies, so that their common terms are
-    differentiated once.
+    The context's d/dt is shared between bodies, so that their common terms
+    are differentiated once.
     """
-    differentiate = differentiate or S.time_differentiator(rate_symbols_chain(system))
-    derivative = [differentiate(e) for e in vector]
-    dependent = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
-    return [e.xreplace(dependent) for e in derivative] if dependent else derivative
+    derivative = [context.differentiate(e) for e in vector]
+    return [e.xreplace(context.dependent) for e in derivative] if context.dependent else derivative
 
 
 def body_motions(system: System, rates: Rates) -> tuple[BodyMotion, ...]:
-    gamma = dependent_acceleration_rest(system, rates)
+    context = motion_context(system, rates)
     # One Jacobian of all the positions: the bodies of a chain repeat each
     # other's terms, and one memo per coordinate differentiates each term once.
     positions = [e for body in system.bodies for e in body.position]
-    J = jacobian_rows(positions, [S.value(c.name) for c in system.coordinates])
-    differentiate = S.time_differentiator(rate_symbols_chain(system))
+    J = jacobian_rows(positions, context.coordinate_values)
     out = []
     for i, body in enumerate(system.bodies):
-        linear = point_motion(body.position, system, rates, gamma=gamma, J=J[3 * i:3 * i + 3],
-                              differentiate=differentiate)
-        angular = (rotation_motion(body.rotation, system, rates, gamma=gamma, differentiate=differentiate)
-                   if body.is_rigid else None)
+        linear = point_motion(body.position, system, rates, context, J=J[3 * i:3 * i + 3])
+        angular = rotation_motion(body.rotation, system, rates, context) if body.is_rigid else None
         out.append(BodyMotion(body, linear, angular))
     return tuple(out)

@@ -18,7 +18,7 @@ class OutputError(GacliError):
     """The output path cannot receive the generated files."""
 
 
-def targets(files: dict[str, str], output: Path) -> dict[Path, str]:
+def targets(files: dict[str, str | bytes], output: Path) -> dict[Path, str | bytes]:
     """Where each generated file goes: into ``output`` when it is a directory
     (or several files are generated), else ``output`` itself."""
     if output.is_dir() or len(files) > 1:
@@ -29,7 +29,7 @@ def targets(files: dict[str, str], output: Path) -> dict[Path, str]:
     return {output: text}
 
 
-def write_files(files: dict[str, str], output: Path) -> list[Path]:
+def write_files(files: dict[str, str | bytes], output: Path) -> list[Path]:
     """Write every file atomically; returns the paths written."""
     planned = targets(files, output)
     for path in planned:
@@ -40,9 +40,12 @@ def write_files(files: dict[str, str], output: Path) -> list[Path]:
     return list(planned)
 
 
-def _write_atomic(path: Path, text: str) -> None:
+def _write_atomic(path: Path, text: str | bytes) -> None:
     with atomic_path(path) as tmp:
-        tmp.write_text(text, encoding="utf-8", newline="\n")
+        if isinstance(text, bytes):  # a zip (the FMU): written as it is
+            tmp.write_bytes(text)
+        else:
+            tmp.write_text(text, encoding="utf-8", newline="\n")
 
 
 @contextlib.contextmanager

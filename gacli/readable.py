@@ -92,7 +92,8 @@ def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
 
 def displayable(d) -> bool:
     """Whether the derivation's M and F are small enough to print as formulas."""
-    return not any(is_large(e) for e in (*d.mass_matrix, *d.forcing))
+    # The nonzero entries only: a wide system's M is k² entries, nearly all zero.
+    return not any(is_large(e) for e in (*d.mass_matrix.todok().values(), *d.forcing))
 
 
 class _FilePrinter(StrPrinter):

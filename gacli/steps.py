@@ -179,7 +179,7 @@ def equation_of_motion(d: Derivation, s: int, tidy: Tidy) -> Equation:
     """∂G/∂u̇_s = Q_s written as Σ_r M_sr u̇_r + (Q_s − F_s) = Q_s."""
     # Zero entries are skipped and the sum made once: tidying every entry of a
     # row, and growing the sum a term at a time, made this ~k² per row.
-    M = d.mass_matrix
-    terms = [tidy(M[s, r]) * a for r, a in enumerate(d.speed_rates) if M[s, r] != 0]
+    row = d.mass_matrix.row(s).todok()
+    terms = [tidy(row[0, r]) * d.speed_rates[r] for _, r in sorted(row)]
     lhs = sp.Add(*terms) + tidy(d.generalized_forces[s] - d.forcing[s])
     return Equation(lhs, tidy(d.generalized_forces[s]), "14.19")

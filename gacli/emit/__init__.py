@@ -2,11 +2,11 @@
 
 Every emitter is a pure function ``emit_X(derivation, **options)`` that
 returns ``{file name: file text}`` and writes nothing; the CLI writes the
-files. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
+files. The FMU's one file is a zip, so its value is bytes. :data:`EMITTERS` maps each ``--format`` to its emitter. Emitters are
 imported on first use, so that ``gacli check`` does not pay for them.
 
 >>> sorted(EMITTERS)
-['c', 'jax', 'latex', 'octave', 'python']
+['c', 'fmu', 'jax', 'latex', 'octave', 'python']
 """
 
 from __future__ import annotations
@@ -43,6 +43,13 @@ def emit_latex(derivation: Derivation, **options) -> dict[str, str]:
     return emit(derivation, **options)
 
 
+def emit_fmu(derivation: Derivation, **options) -> dict[str, bytes]:
+    """``{"<name>.fmu": zip bytes}``, FMI 2.0 Model Exchange: see :mod:`gacli.emit.fmu`."""
+    from gacli.emit.fmu import emit_fmu as emit
+
+    return emit(derivation, **options)
+
+
 def emit_octave(derivation: Derivation, **options) -> dict[str, str]:
     """``{"<name>_rhs.m": ..., ...}``, Octave/MATLAB function files: see :mod:`gacli.emit.octave`."""
     from gacli.emit.octave import emit_octave as emit
@@ -61,11 +68,12 @@ EMITTERS: dict[str, Emitter] = {
     "python": emit_python,
     "c": emit_c,
     "latex": emit_latex,
+    "fmu": emit_fmu,
     "octave": emit_octave,
     "jax": emit_jax,
 }
 
-__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
+__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_fmu", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
 
 
 class _CallablePackage(types.ModuleType):
