@@ -90,7 +90,7 @@ def write_python(derivation, tmp_path):
 # -- registry --------------------------------------------------------------------
 
 def test_registry_names_every_format():
-    assert sorted(EMITTERS) == ["c", "fmu", "latex", "python"]
+    assert sorted(EMITTERS) == ["c", "fmu", "jax", "latex", "octave", "python"]
 
 
 @pytest.mark.parametrize(("fmt", "suffixes"), [("python", [".py"]), ("c", [".c", ".h"]), ("latex", [".tex"])])

@@ -1,6 +1,8 @@
 """Generated code byte for byte: golden files, and the same bytes under any hash seed.
 
-The golden files are tests/golden/cylinder_in_cylinder.{py,h,c}, generated
+The golden files are tests/golden/cylinder_in_cylinder.{py,h,c}, its
+Octave function files cylinder_in_cylinder_*.m and its JAX module
+cylinder_in_cylinder_jax.py, generated
 from systems/cylinder_in_cylinder.yaml; they are small on purpose, to be
 read in review. After a deliberate change to the emitters, regenerate them
 with
@@ -27,7 +29,8 @@ from gacli.emit import EMITTERS
 GOLDEN = ROOT / "tests" / "golden"
 GOLDEN_SYSTEM = "cylinder_in_cylinder"
 UPDATE = os.environ.get("GACLI_UPDATE_GOLDEN") == "1"
-FORMATS = ("python", "c")
+FORMATS = ("python", "c", "octave", "jax")
+FILES_PER_SYSTEM = 1 + 2 + 4 + 1
 
 
 def generated(name: str) -> dict[str, str]:
@@ -37,7 +40,9 @@ def generated(name: str) -> dict[str, str]:
     return files
 
 
-@pytest.mark.parametrize("file_name", [f"{GOLDEN_SYSTEM}.py", f"{GOLDEN_SYSTEM}.h", f"{GOLDEN_SYSTEM}.c"])
+@pytest.mark.parametrize("file_name", [
+    f"{GOLDEN_SYSTEM}{suffix}" for suffix in (
+        ".py", ".h", ".c", "_rhs.m", "_mass_matrix.m", "_forcing.m", "_indices.m", "_jax.py")])
 def test_matches_golden_file(file_name):
     text = generated(GOLDEN_SYSTEM)[file_name]
     path = GOLDEN / file_name
@@ -83,4 +88,4 @@ def test_same_bytes_under_any_hash_seed():
     here = {name: hashlib.sha256(text.encode("utf-8")).hexdigest()
             for p in sorted(SYSTEMS.glob("*.yaml")) for name, text in generated(p.stem).items()}
     assert here == first
-    assert len(first) == 3 * len(list(SYSTEMS.glob("*.yaml")))
+    assert len(first) == FILES_PER_SYSTEM * len(list(SYSTEMS.glob("*.yaml")))

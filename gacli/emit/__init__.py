@@ -6,7 +6,7 @@ files. The FMU's one file is a zip, so its value is bytes. :data:`EMITTERS` maps
 imported on first use, so that ``gacli check`` does not pay for them.
 
 >>> sorted(EMITTERS)
-['c', 'fmu', 'latex', 'python']
+['c', 'fmu', 'jax', 'latex', 'octave', 'python']
 """
 
 from __future__ import annotations
@@ -50,14 +50,30 @@ def emit_fmu(derivation: Derivation, **options) -> dict[str, bytes]:
     return emit(derivation, **options)
 
 
+def emit_octave(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>_rhs.m": ..., ...}``, Octave/MATLAB function files: see :mod:`gacli.emit.octave`."""
+    from gacli.emit.octave import emit_octave as emit
+
+    return emit(derivation, **options)
+
+
+def emit_jax(derivation: Derivation, **options) -> dict[str, str]:
+    """``{"<name>_jax.py": text}``, a ``jax.numpy`` module: see :mod:`gacli.emit.jax`."""
+    from gacli.emit.jax import emit_jax as emit
+
+    return emit(derivation, **options)
+
+
 EMITTERS: dict[str, Emitter] = {
     "python": emit_python,
     "c": emit_c,
     "latex": emit_latex,
     "fmu": emit_fmu,
+    "octave": emit_octave,
+    "jax": emit_jax,
 }
 
-__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_fmu", "emit_latex", "emit_python"]
+__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_fmu", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
 
 
 class _CallablePackage(types.ModuleType):

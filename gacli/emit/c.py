@@ -14,7 +14,8 @@ The code is C99 with no allocation, no globals and nothing beyond
 ``<math.h>``, and compiles cleanly with ``-std=c99 -Wall -Wextra -Werror
 -pedantic``: unused arguments are cast to void, π is a literal (``M_PI`` is
 not C99). Each function shares its common subexpressions; ``rhs`` fills a
-local ``double M[k*k]`` and solves M u' = F in place by a Cholesky
+local ``double M[k*k]`` (zero-filled first when M has zero entries: only the
+nonzero ones are computed) and solves M u' = F in place by a Cholesky
 factorization written as loops for the fixed size k.
 """
 
@@ -26,27 +27,14 @@ from string import Template
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.emit.naming import (
-    Entry,
-    Layout,
-    forcing_equations,
-    header_lines,
-    kinematic_equations,
-    layout,
-    lower_mass_matrix_equations,
-    lower_triangle,
-    mass_matrix_equations,
-    reaction_equations,
-    reaction_solve,
-)
-from gacli.emit.printers import Block, GacliCPrinter, print_block
+from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
+from gacli.emit.naming import Entry, Layout, header_lines, layout
+from gacli.emit.printers import GacliCPrinter, print_block
 from gacli.equations import Derivation
 from gacli.errors import EmitError
 from gacli.readable import displayable
 
 INDENT = "    "
-ARGUMENTS = ("t", "x", "p", "r")
 
 HEADER = Template('''\
 $comment
@@ -222,30 +210,32 @@ def _signature(lay: Layout, function: str) -> str:
 # -- the three functions ----------------------------------------------------------
 
 def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, mass_matrix_equations(derivation))
-    return _function(lay, "mass_matrix", [], block, _assign("M", block.results))
+    code = _assemble(derivation, lay, ("M",))
+    # Only M's nonzero entries are set: a wide system's M is k² entries, nearly all zero.
+    fill = [] if code.dense("M") else [f"for (int _i = 0; _i < {lay.prefix}_NU*{lay.prefix}_NU; ++_i) M[_i] = 0.0;"]
+    return _function(lay, "mass_matrix", fill, code, _assign_matrix(code.slots["M"], lay.k))
 
 
 def _forcing(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, forcing_equations(derivation))
-    return _function(lay, "forcing", [], block, _assign("F", block.results))
+    code = _assemble(derivation, lay, ("F",))
+    return _function(lay, "forcing", [], code, _assign_vector("F", code.slots["F"]))
 
 
 def _rhs(derivation: Derivation, lay: Layout) -> str:
-    lower = lower_mass_matrix_equations(derivation)
-    block = _block(lay, kinematic_equations(derivation) + lower + forcing_equations(derivation))
-    n, m, k = lay.n, len(lower), lay.k
+    code = _assemble(derivation, lay, ("qdot", "M_lower", "F"))
+    size = f"{lay.prefix}_NU*{lay.prefix}_NU"
     locals_ = [
-        f"double M[{lay.prefix}_NU*{lay.prefix}_NU]; /* only the lower triangle is set and read */",
+        f"double M[{size}]; /* only the lower triangle is set and read */" if code.dense("M_lower") else
+        f"double M[{size}] = {{0.0}}; /* only the lower triangle's nonzero entries are set */",
         f"double *F = xdot + ({lay.prefix}_NX - {lay.prefix}_NU);",
     ]
     assignments = [
-        *_assign("xdot", block.results[:n]),
-        *(f"M[{i * k + j}] = {code};" for (i, j), code in zip(lower_triangle(k), block.results[n:n + m])),
-        *_assign("F", block.results[n + m:]),
+        *_assign_vector("xdot", code.slots["qdot"]),
+        *_assign_matrix(code.slots["M_lower"], lay.k),
+        *_assign_vector("F", code.slots["F"]),
         f"return {lay.function('cholesky_solve')}(M, F);",
     ]
-    return _function(lay, "rhs", locals_, block, assignments)
+    return _function(lay, "rhs", locals_, code, assignments)
 
 
 def _reactions_declaration(derivation: Derivation, lay: Layout) -> str:
@@ -259,17 +249,17 @@ def _reactions_declaration(derivation: Derivation, lay: Layout) -> str:
 def _reactions(derivation: Derivation, lay: Layout) -> str:
     solve = reaction_solve(derivation)
     if solve is None:
-        block = _block(lay, reaction_equations(derivation))
+        code = _block(lay, reaction_equations(derivation))
         # No constraint, no multiplier: the output array is never written, and -Wextra says so.
-        none = [] if block.results else ["(void)lambda;"]
-        return _function(lay, "reactions", none, block, _assign("lambda", block.results))
+        none = [] if code.block.results else ["(void)lambda;"]
+        return _function(lay, "reactions", none, code, _assign("lambda", code.block.results))
     if solve.redundant:
         raise EmitError(
             f"{derivation.system.path}: the constraint forces of a system this large with repeated constraint "
             "rows (the reaction shared among them is statically indeterminate) are generated for Python only, "
             "as the minimum-norm solution; leave out --reactions for C")
-    block = _block(lay, solve.equations)
-    entries, rhs = block.results[:len(solve.nonzero)], block.results[len(solve.nonzero):]
+    code = _block(lay, solve.equations)
+    entries, rhs = code.block.results[:len(solve.nonzero)], code.block.results[len(solve.nonzero):]
     n = solve.size
     locals_ = [
         "/* The fundamental equations in all the rates and multipliers (docs/verify.md), solved",
@@ -291,7 +281,7 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
         f"{INDENT}lambda[_i] = _b[{solve.first} + _i];",
         "}",
     ]
-    return LU_SOLVE.substitute(name=lay.system) + _function(lay, "reactions", locals_, block, assignments)
+    return LU_SOLVE.substitute(name=lay.system) + _function(lay, "reactions", locals_, code, assignments)
 
 
 LU_SOLVE = Template('''
@@ -353,41 +343,38 @@ static int ${name}_lu_solve(int n, double *K, double *b)
 ''')
 
 
-def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:
-    block, printer = print_block(GacliCPrinter, lay.identifiers, equations)
+def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Assembly:
+    code, printer = assemble(derivation, lay.identifiers, GacliCPrinter, parts)
     printer.includes()  # raises if the code would need more than <math.h>
-    return block
+    return code
 
 
-def _function(lay: Layout, function: str, locals_: list[str], block: Block, assignments: list[str]) -> str:
+def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Assembly:
+    block, printer = print_block(GacliCPrinter, lay.identifiers, equations)
+    printer.includes()
+    return Assembly(block, {}, lay.k)
+
+
+def _function(lay: Layout, function: str, locals_: list[str], code: Assembly, assignments: list[str]) -> str:
     """Unused arguments, unpacked entries, temporaries, then the assignments."""
     body = [
-        *(f"(void){arg};" for arg in _unused(lay, block)),
+        *(f"(void){arg};" for arg in code.unused(lay)),
         *locals_,
-        *_unpack(lay, block),
-        *(f"const double {name} = {code};" for name, code in block.temporaries),
+        *(f"const double {e.identifier} = {vector}[{e.macro}];"
+          for vector in ("x", "p", "r") for e in code.read_entries(lay, vector)),
+        *(f"const double {name} = {value};" for name, value in code.block.temporaries),
         *assignments,
     ]
     return FUNCTION.substitute(signature=_signature(lay, function), body="\n".join(INDENT + line for line in body))
 
 
-def _unused(lay: Layout, block: Block) -> list[str]:
-    read = {"t": S.T in block.symbols}
-    for vector in ("x", "p", "r"):
-        read[vector] = any(e.symbol in block.symbols for e in _vector(lay, vector))
-    return [arg for arg in ARGUMENTS if not read[arg]]
-
-
-def _unpack(lay: Layout, block: Block) -> list[str]:
-    return [
-        f"const double {e.identifier} = {vector}[{e.macro}];"
-        for vector in ("x", "p", "r") for e in _vector(lay, vector) if e.symbol in block.symbols
-    ]
-
-
-def _vector(lay: Layout, vector: str) -> tuple[Entry, ...]:
-    return {"x": lay.state_entries, "p": lay.parameter_entries, "r": lay.r_entries}[vector]
-
-
 def _assign(array: str, codes: Sequence[str]) -> list[str]:
     return [f"{array}[{i}] = {code};" for i, code in enumerate(codes)]
+
+
+def _assign_vector(array: str, slots: Sequence[tuple[int, str]]) -> list[str]:
+    return [f"{array}[{i}] = {code};" for i, code in slots]
+
+
+def _assign_matrix(slots: Sequence[tuple[tuple[int, int], str]], k: int) -> list[str]:
+    return [f"M[{i * k + j}] = {code};" for (i, j), code in slots]

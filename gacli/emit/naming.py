@@ -203,8 +203,11 @@ class Layout:
         return f"{self.system}_{suffix}"
 
 
-def layout(derivation: Derivation) -> Layout:
+def layout(derivation: Derivation, reserved: Iterable[str] = ()) -> Layout:
     """The layout of the generated code's arguments for a derivation.
+
+    ``reserved``: more names that no identifier may take, for a target
+    with keywords and builtins of its own (Octave's ``end``, ``pi``).
 
     Raises:
         EmitError: when M, F or the kinematic equations hold a symbol that
@@ -219,7 +222,7 @@ def layout(derivation: Derivation) -> Layout:
         "r": _r_slots(derivation, used),
     }
     _check_covered(used, groups)
-    entries = _name_entries(groups, prefix, reserved=RESERVED | _c_names(system.name, prefix, groups))
+    entries = _name_entries(groups, prefix, reserved=RESERVED | _c_names(system.name, prefix, groups) | reserved)
     return Layout(
         system=system.name, prefix=prefix,
         state_entries=entries["x"], parameter_entries=entries["p"], r_entries=entries["r"],
@@ -230,7 +233,8 @@ def layout(derivation: Derivation) -> Layout:
 def _used_symbols(derivation: Derivation) -> set[sp.Symbol]:
     from gacli.graph import free_symbols
 
-    exprs = [*derivation.mass_matrix, *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
+    # M's nonzero entries only: a wide system's M is k² entries, nearly all zero.
+    exprs = [*derivation.mass_matrix.todok().values(), *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
     return free_symbols(exprs)
 
 
@@ -376,72 +380,3 @@ def one_line(text: str) -> str:
     in a generated file.
     """
     return " ".join("".join(c if c.isprintable() else " " for c in text).split())
-
-
-# -- the equations, named and in the order the code computes them -------------
-
-def kinematic_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
-    """q' = beta u + beta0 (eq. 14.20), one per coordinate in declaration order."""
-    return [(f"dot({name})", expr) for name, expr in derivation.kinematic_equations]
-
-
-def mass_matrix_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
-    """The k*k entries of M, row-major (the layout of the C array)."""
-    M, k = derivation.mass_matrix, derivation.k
-    return [(f"M[{i}, {j}]", M[i, j]) for i in range(k) for j in range(k)]
-
-
-def lower_triangle(k: int) -> list[tuple[int, int]]:
-    """(i, j) with j <= i, row by row: the part of M that a Cholesky factorization reads."""
-    return [(i, j) for i in range(k) for j in range(i + 1)]
-
-
-def lower_mass_matrix_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
-    """The entries of M on and below the diagonal, in the order of :func:`lower_triangle`."""
-    M = derivation.mass_matrix
-    return [(f"M[{i}, {j}]", M[i, j]) for i, j in lower_triangle(derivation.k)]
-
-
-def forcing_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
-    """The k entries of F."""
-    return [(f"F[{s}]", derivation.forcing[s]) for s in range(derivation.k)]
-
-
-def reaction_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
-    """The multipliers λ of the constraints (docs/verify.md), in the state, one per constraint."""
-    from gacli.verify import constraint_forces
-
-    forces = constraint_forces(derivation, simplify=False)
-    return [(f"lambda[{i}]", forces[i]) for i in range(len(forces))]
-
-
-@dataclass(frozen=True)
-class ReactionSolve:
-    """λ found by a numeric solve in the generated code: K z = b, λ = z[first:first + count].
-
-    For systems too large to print, whose symbolic λ (:func:`reaction_equations`)
-    would need a solve of equations millions of terms long; K and b are the
-    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`).
-    """
-
-    size: int
-    first: int
-    count: int
-    redundant: bool  # K is singular by construction: λ is the minimum-norm solution
-    nonzero: tuple[tuple[int, int], ...]  # the entries of K that are not identically 0, row-major
-    equations: list[tuple[str, sp.Expr]]  # those entries of K, then the size entries of b
-
-
-def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
-    """How generated code finds λ numerically; None when :func:`reaction_equations` gives it in closed form."""
-    from gacli.readable import displayable
-    from gacli.verify import reaction_system
-
-    if displayable(derivation):
-        return None
-    system = reaction_system(derivation)
-    size = system.K.rows
-    nonzero = tuple((i, j) for i in range(size) for j in range(size) if system.K[i, j] != 0)
-    equations = [(f"K[{i}, {j}]", system.K[i, j]) for i, j in nonzero]
-    equations += [(f"b[{i}]", system.b[i]) for i in range(size)]
-    return ReactionSolve(size, system.rates, system.constraint_count, system.redundant, nonzero, equations)

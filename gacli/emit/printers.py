@@ -1,9 +1,9 @@
-"""SymPy code printers for gacli's generated Python and C.
+"""SymPy code printers for gacli's generated Python, C, Octave and JAX.
 
-Both printers take the map symbol → code name in ``__init__`` (see
-:mod:`gacli.emit.naming`) and print every symbol through it, so that
-``dot(q_z)`` reads ``dot_q_z``. They keep SymPy's ``strict`` mode: a node
-without a rendering raises :class:`UnsupportedNode` (an
+Each subclasses SymPy's printer for its language. They all take the map
+symbol → code name in ``__init__`` (see :mod:`gacli.emit.naming`) and
+print every symbol through it, so that ``dot(q_z)`` reads ``dot_q_z``.
+They keep SymPy's ``strict`` mode: a node without a rendering raises :class:`UnsupportedNode` (an
 :class:`~gacli.errors.EmitError` that names the node's type) instead of
 leaving a comment in the code; :func:`print_code` adds the equation it
 came from.
@@ -25,6 +25,8 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.codeprinter import PrintMethodNotImplementedError
+from sympy.printing.numpy import JaxPrinter
+from sympy.printing.octave import OctaveCodePrinter
 from sympy.printing.pycode import PythonCodePrinter
 
 from gacli.coerce import as_expr
@@ -33,6 +35,7 @@ from gacli.errors import EmitError
 
 # What generated code may depend on.
 PYTHON_MODULES = frozenset({"math", "numpy"})
+JAX_MODULES = frozenset({"jax", "jax.numpy"})
 C_HEADERS = frozenset({"math.h"})
 
 
@@ -153,6 +156,36 @@ class GacliCPrinter(_Numbers, _NamedSymbols, C99CodePrinter):
         return headers
 
 
+class GacliOctavePrinter(_Numbers, _NamedSymbols, OctaveCodePrinter):
+    """GNU Octave and MATLAB code for scalar expressions (SymPy prints the element-wise operators)."""
+
+    language = "Octave"
+    infinity = "Inf"
+
+    def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
+        super().__init__({**(settings or {}), "strict": True})
+        self._init_names(names)
+
+
+class GacliJaxPrinter(_Numbers, _NamedSymbols, JaxPrinter):
+    """``jax.numpy`` code for scalar expressions: traceable by jit, vmap and grad."""
+
+    language = "JAX"
+    infinity = "jax.numpy.inf"
+
+    def __init__(self, names: Mapping[sp.Symbol, str], settings: dict | None = None) -> None:
+        super().__init__({"fully_qualified_modules": True, **(settings or {}), "strict": True})
+        self._init_names(names)
+
+    def imports(self) -> list[str]:
+        """The modules the printed code uses, sorted; only jax and jax.numpy are allowed."""
+        modules = sorted(self.module_imports)
+        extra = [m for m in modules if m not in JAX_MODULES]
+        if extra:
+            raise EmitError(f"the generated JAX would need {', '.join(extra)}")
+        return modules
+
+
 def print_code(printer, expr: sp.Expr, where: Callable[[sp.Basic], str] | str) -> str:
     """``printer.doprint(expr)``; an unsupported node becomes an EmitError naming ``where``.
 
@@ -194,14 +227,15 @@ CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
-                equations: Sequence[tuple[str, sp.Expr]]) -> tuple[Block, object]:
+                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX) -> tuple[Block, object]:
     """CSE over the equations, in their order, then print; returns the block and the printer.
 
     The printer is returned so that callers can read what the code needs
-    (``imports()``, ``includes()``).
+    (``imports()``, ``includes()``). Temporaries are named ``<prefix>0``,
+    ``<prefix>1`` ...: the prefix must be one that no name in ``names`` has.
     """
     exprs = [as_expr(expr) for _, expr in equations]
-    names_of_temporaries = sp.numbered_symbols(CSE_PREFIX)
+    names_of_temporaries = sp.numbered_symbols(prefix)
     if not any(is_large(e) for e in exprs):
         replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
     else:

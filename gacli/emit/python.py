@@ -26,17 +26,8 @@ from string import Template
 
 import sympy as sp
 
-from gacli.emit.naming import (
-    Layout,
-    forcing_equations,
-    header_lines,
-    kinematic_equations,
-    layout,
-    lower_mass_matrix_equations,
-    mass_matrix_equations,
-    reaction_equations,
-    reaction_solve,
-)
+from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
+from gacli.emit.naming import Layout, header_lines, layout
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.equations import Derivation
 
@@ -132,8 +123,8 @@ def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str,
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
         name=lay.system, k=lay.k, imports="import math\n\nimport numpy",
-        state=_tuple(lay.state), parameters=_tuple(lay.parameters), inputs=_tuple(lay.r),
-        defaults=_dict(lay.defaults), functions="".join(functions),
+        state=python_tuple(lay.state), parameters=python_tuple(lay.parameters), inputs=python_tuple(lay.r),
+        defaults=python_dict(lay.defaults), functions="".join(functions),
     )
     return {f"{lay.system}.py": text}
 
@@ -141,27 +132,35 @@ def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str,
 # -- the three functions ----------------------------------------------------------
 
 def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, mass_matrix_equations(derivation))
-    rows = _rows(block.results, lay.k)
-    body = [*_prologue(lay, block), "return numpy.array([", *_items(rows, 1), "], dtype=float)"]
+    code = _assemble(derivation, lay, ("M",))
+    if code.dense("M"):
+        rows = _rows([c for _, c in code.slots["M"]], lay.k)
+        body = [*_prologue(lay, code.block), "return numpy.array([", *_items(rows, 1), "], dtype=float)"]
+    else:
+        # Only M's nonzero entries are set: a wide system's M is k² entries, nearly all zero.
+        body = [*_prologue(lay, code.block), f"M = numpy.zeros(({lay.k}, {lay.k}))",
+                *(f"M[{i}, {j}] = {c}" for (i, j), c in code.slots["M"]), "return M"]
     return _function("mass_matrix", lay, body)
 
 
 def _forcing(derivation: Derivation, lay: Layout) -> str:
-    block = _block(lay, forcing_equations(derivation))
-    body = [*_prologue(lay, block), "return numpy.array([", *_items(block.results, 1), "], dtype=float)"]
+    code = _assemble(derivation, lay, ("F",))
+    codes = [c for _, c in code.slots["F"]]
+    body = [*_prologue(lay, code.block), "return numpy.array([", *_items(codes, 1), "], dtype=float)"]
     return _function("forcing", lay, body)
 
 
 def _rhs(derivation: Derivation, lay: Layout) -> str:
-    lower = lower_mass_matrix_equations(derivation)
-    block = _block(lay, kinematic_equations(derivation) + lower + forcing_equations(derivation))
-    n, m = lay.n, len(lower)
-    qdot, mass, force = block.results[:n], block.results[n:n + m], block.results[n + m:]
+    code = _assemble(derivation, lay, ("qdot", "M_lower", "F"))
+    qdot, force = [c for _, c in code.slots["qdot"]], [c for _, c in code.slots["F"]]
+    if code.dense("M_lower"):
+        mass = ["M = [  # the lower triangle: all that _cholesky_solve reads",
+                *_items(_lower_rows([c for _, c in code.slots["M_lower"]], lay.k), 1), "]"]
+    else:
+        mass = [f"M = [[0.0] * (i + 1) for i in range({lay.k})]  # the lower triangle: all that _cholesky_solve reads",
+                *(f"M[{i}][{j}] = {c}" for (i, j), c in code.slots["M_lower"])]
     body = [
-        *_prologue(lay, block),
-        "M = [  # the lower triangle: all that _cholesky_solve reads",
-        *_items(_lower_rows(mass, lay.k), 1), "]",
+        *_prologue(lay, code.block), *mass,
         "F = [", *_items(force, 1), "]",
         "return numpy.array([", *_items([*qdot, "*_cholesky_solve(M, F)"], 1), "], dtype=float)",
     ]
@@ -200,6 +199,12 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
 
 
 # -- pieces of code ------------------------------------------------------------
+
+def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Assembly:
+    code, printer = assemble(derivation, lay.identifiers, GacliPythonPrinter, parts)
+    printer.imports()  # raises if the code would need more than math and numpy
+    return code
+
 
 def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:
     block, printer = print_block(GacliPythonPrinter, lay.identifiers, equations)
@@ -240,10 +245,10 @@ def _targets(names: Sequence[str]) -> str:
     return f"[{names[0]}]" if len(names) == 1 else ", ".join(names)
 
 
-def _tuple(names: Sequence[str]) -> str:
+def python_tuple(names: Sequence[str]) -> str:
     items = [json.dumps(n) for n in names]
     return f"({items[0]},)" if len(items) == 1 else "(" + ", ".join(items) + ")"
 
 
-def _dict(values: dict[str, float]) -> str:
+def python_dict(values: dict[str, float]) -> str:
     return "{" + ", ".join(f"{json.dumps(n)}: {v!r}" for n, v in values.items()) + "}"

@@ -1,0 +1,147 @@
+"""What every code target computes, assembled once: the equations, CSE'd and printed.
+
+A target (C, Python, Octave, JAX) is a printer and a template around one
+:class:`Assembly`: which equations a function computes and in what order,
+the shared subexpressions, the code of each result, the nonzero entries of
+M, and which arguments and which entries of x, p and r the code reads (an
+argument it does not read is unused; an entry it does not read need not
+be unpacked).
+
+M is walked through its nonzero entries only (the sparse representation
+that SymPy keeps anyway): a wide system of n uncoupled bodies has k = n
+rates but only k nonzero entries of M among k², and the targets fill the
+rest of the array with zeros in one step.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.emit.naming import Entry, Layout
+from gacli.emit.printers import CSE_PREFIX, Block, print_block
+from gacli.equations import Derivation
+
+# The parts a generated function may compute, in the order its block computes them.
+PARTS = ("qdot", "M", "M_lower", "F")
+
+
+@dataclass(frozen=True)
+class Assembly:
+    """One function's block and, per part, ``(slot, code)`` of each result.
+
+    ``slots["M"]`` holds ``((i, j), code)`` for the nonzero entries of M,
+    row-major; ``slots["M_lower"]`` those with ``j <= i`` (all that a
+    Cholesky factorization reads); ``slots["qdot"]`` and ``slots["F"]``
+    hold ``(index, code)`` for every entry.
+    """
+
+    block: Block
+    slots: dict[str, tuple]
+    k: int
+
+    def dense(self, part: str) -> bool:
+        """Whether every entry of the part is set: M with no zero entry, say."""
+        full = {"M": self.k * self.k, "M_lower": self.k * (self.k + 1) // 2}.get(part)
+        return full is None or len(self.slots[part]) == full
+
+    def reads(self, lay: Layout, argument: str) -> bool:
+        """Whether the code reads ``t``, or any entry of ``x``, ``p`` or ``r``."""
+        if argument == "t":
+            return S.T in self.block.symbols
+        return bool(self.read_entries(lay, argument))
+
+    def unused(self, lay: Layout) -> list[str]:
+        """The arguments t, x, p, r that the code never reads, in that order."""
+        return [arg for arg in ("t", "x", "p", "r") if not self.reads(lay, arg)]
+
+    def read_entries(self, lay: Layout, vector: str) -> list[Entry]:
+        """The entries of one vector that the code reads, in their order."""
+        return [e for e in vector_entries(lay, vector) if e.symbol in self.block.symbols]
+
+
+def vector_entries(lay: Layout, vector: str) -> tuple[Entry, ...]:
+    return {"x": lay.state_entries, "p": lay.parameter_entries, "r": lay.r_entries}[vector]
+
+
+def assemble(derivation: Derivation, names: dict, printer_class, parts: Sequence[str],
+             prefix: str = CSE_PREFIX) -> tuple[Assembly, object]:
+    """CSE over the parts' equations, in the order given, and print them with ``printer_class``.
+
+    ``names`` maps each symbol to its code name (:attr:`Layout.identifiers`).
+    Returns the assembly and the printer, from which a target reads what the
+    code needs (``includes()``, ``imports()``).
+    """
+    keyed = [(part, equations(derivation, part)) for part in parts]
+    flat = [(name, expr) for _, group in keyed for _, name, expr in group]
+    block, printer = print_block(printer_class, names, flat, prefix=prefix)
+    slots, start = {}, 0
+    for part, group in keyed:
+        codes = block.results[start:start + len(group)]
+        slots[part] = tuple((slot, code) for (slot, _, _), code in zip(group, codes))
+        start += len(group)
+    return Assembly(block, slots, derivation.k), printer
+
+
+def equations(derivation: Derivation, part: str) -> list[tuple[object, str, sp.Expr]]:
+    """``(slot, name, expression)`` of one part; the name is for error messages."""
+    if part == "qdot":
+        return [(i, f"dot({name})", expr) for i, (name, expr) in enumerate(derivation.kinematic_equations)]
+    if part == "F":
+        return [(s, f"F[{s}]", derivation.forcing[s]) for s in range(derivation.k)]
+    return [((i, j), f"M[{i}, {j}]", expr) for (i, j), expr in mass_matrix_entries(derivation, part == "M_lower")]
+
+
+def mass_matrix_entries(derivation: Derivation, lower: bool = False) -> list[tuple[tuple[int, int], sp.Expr]]:
+    """The entries of M that are not identically zero, row-major; ``lower``: only those with j <= i.
+
+    Read from the sparse form of M, never entry by entry: linear in the
+    number of nonzero entries, not in k².
+    """
+    entries = sorted(derivation.mass_matrix.todok().items())
+    return [((i, j), expr) for (i, j), expr in entries if not (lower and j > i) and expr != 0]
+
+
+# -- the constraint forces ------------------------------------------------------
+
+def reaction_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
+    """The multipliers λ of the constraints (docs/verify.md), in the state, one per constraint."""
+    from gacli.verify import constraint_forces
+
+    forces = constraint_forces(derivation, simplify=False)
+    return [(f"lambda[{i}]", forces[i]) for i in range(len(forces))]
+
+
+@dataclass(frozen=True)
+class ReactionSolve:
+    """λ found by a numeric solve in the generated code: K z = b, λ = z[first:first + count].
+
+    For systems too large to print, whose symbolic λ (:func:`reaction_equations`)
+    would need a solve of equations millions of terms long; K and b are the
+    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`).
+    """
+
+    size: int
+    first: int
+    count: int
+    redundant: bool  # K is singular by construction: λ is the minimum-norm solution
+    nonzero: tuple[tuple[int, int], ...]  # the entries of K that are not identically 0, row-major
+    equations: list[tuple[str, sp.Expr]]  # those entries of K, then the size entries of b
+
+
+def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
+    """How generated code finds λ numerically; None when :func:`reaction_equations` gives it in closed form."""
+    from gacli.readable import displayable
+    from gacli.verify import reaction_system
+
+    if displayable(derivation):
+        return None
+    system = reaction_system(derivation)
+    size = system.K.rows
+    nonzero = tuple((i, j) for i in range(size) for j in range(size) if system.K[i, j] != 0)
+    equations = [(f"K[{i}, {j}]", system.K[i, j]) for i, j in nonzero]
+    equations += [(f"b[{i}]", system.b[i]) for i in range(size)]
+    return ReactionSolve(size, system.rates, system.constraint_count, system.redundant, nonzero, equations)
