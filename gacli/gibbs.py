@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.graph import is_small
 from gacli import trig
 from gacli.kinematics import BodyMotion, Rates, configuration_chain, motion_velocity
 from gacli.model import System
@@ -34,14 +35,18 @@ def gibbs_function(system: System, rates: Rates, motions: tuple[BodyMotion, ...]
     # so one per body would cost n² for n bodies.
     d_dt = S.time_differentiator(acceleration_chain(system, rates))
     # Reduced body by body: a·a of a point carried through rotations is full of sin² + cos².
-    G = sp.Add(*[trig.reduce(_body_gibbs(motion, rates, d_dt)) for motion in motions])
+    G = sp.Add(*[trig.reduce(_body_gibbs(motion, rates, d_dt, bool(rates.nonlinear))) for motion in motions])
     if whole:
         return G
     return G - G.xreplace({a: 0 for a in rates.speed_rates})
 
 
-def _body_gibbs(motion: BodyMotion, rates: Rates, d_dt) -> sp.Expr:
+def _body_gibbs(motion: BodyMotion, rates: Rates, d_dt, nonlinear: bool = False) -> sp.Expr:
     v = sp.Matrix(motion_velocity(motion.linear, rates.speeds))
+    if nonlinear:
+        # β u + β₀ of a nonlinear rate is f(q, u) written as ∂f/∂u·u + rest (Chetaev's split);
+        # put back together it is f again, and its derivative stays as short.
+        v = v.applyfunc(lambda e: sp.cancel(e) if is_small(e, 400) else e)
     a = v.applyfunc(lambda e: trig.reduce(d_dt(e)))
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:

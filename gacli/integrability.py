@@ -91,6 +91,8 @@ class Classification:
 
     @property
     def verdict(self) -> str:
+        if self.method == "nonlinear":
+            return "nonlinear"
         if self.integrable is None:
             return "undecided"
         if self.kind == "constraint":
@@ -105,6 +107,9 @@ def classify(system: System) -> tuple[Classification, ...]:
         where = f"constraints[{i}]"
         if constraint.relation is not None:
             out.append(Classification("constraint", where, constraint.text, constraint.location, True, "relation"))
+            continue
+        if constraint.rates is not None:  # nonlinear in the rates: a kinematic constraint, never holonomic here
+            out.append(Classification("constraint", where, constraint.text, constraint.location, False, "nonlinear"))
             continue
         decision = is_integrable(constraint.form, system)
         out.append(Classification("constraint", where, constraint.text, constraint.location,

@@ -18,6 +18,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
+from gacli import nonlinear as NL
 from gacli import symbols as S
 from gacli import trig
 from gacli.errors import Diagnostic, SystemFileError
@@ -47,6 +48,9 @@ class Rates:
     constraints_used: int = 0
     relations: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])
     relations_dt: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 1, [])
+    # (name, f(q, u, t)) for each rate a nonlinear constraint determines (β u + β₀ equals it;
+    # f is how the reader wrote it).
+    nonlinear: tuple[tuple[str, sp.Expr], ...] = ()
 
     @property
     def k(self) -> int:
@@ -63,6 +67,9 @@ class Rates:
         return tuple(S.rate(n, 2) for n in self.independent)
 
     def rate(self, name: str) -> sp.Expr:
+        for n, f in self.nonlinear:
+            if n == name:
+                return f
         i = self._index[name]
         return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if _nonzero(b)], self._beta0_column[i])
 
@@ -136,7 +143,7 @@ def _subtract(a: Form, b: Form) -> Form:
 
 
 def solve_rates(system: System) -> Rates:
-    """Every rate as an affine function of the k independent rates (eq. 14.7)."""
+    """Every rate in terms of the k independent rates: affine (eq. 14.7), or through a nonlinear relation."""
     rows, names = relation_rows(system)
     A = sp.Matrix([[form.coefficient(n) for n in names] for _, _, form in rows]) if rows else sp.zeros(0, len(names))
     a0 = sp.Matrix([form.dt for _, _, form in rows]) if rows else sp.zeros(0, 1)
@@ -146,12 +153,70 @@ def solve_rates(system: System) -> Rates:
     if k <= 0:
         raise _error(system, system.location, "",
                      f"the system has no degree of freedom: k = n + p - d - ℓ = {k}")
-    independent, automatic = _choose_independent(system, names, numeric, k)
-    dependent = [n for n in names if n not in independent]
-    beta, beta0 = _solve(A, a0, names, independent, dependent)
+    # A rate a nonlinear constraint determines is solved from it afterwards
+    # (docs/nonlinear.md); the Pfaffian rows are solved for the rest as before.
+    nonlinear = _nonlinear_rates(system, rows)
+    linear = [i for i, (where, _, _) in enumerate(rows) if where not in nonlinear.values()]
+    names_lin = [n for n in names if n not in nonlinear]
+    columns = [names.index(n) for n in names_lin]
+    A_lin, a0_lin = A.extract(linear, columns), a0.extract(linear, [0])
+    independent, automatic = _choose_independent(system, names_lin, numeric[np.ix_(linear, columns)], k)
+    dependent = [n for n in names_lin if n not in independent]
+    beta_lin, beta0_lin = _solve(A_lin, a0_lin, names_lin, independent, dependent)
+    beta, beta0, solved = _with_nonlinear(system, names, names_lin, independent, beta_lin, beta0_lin, nonlinear)
     used = sum(1 for where, _, _ in rows if where.startswith("constraints"))
     return Rates(tuple(names), tuple(independent), automatic, beta, beta0, used,
-                 sp.ImmutableMatrix(A), sp.ImmutableMatrix(a0))
+                 sp.ImmutableMatrix(A), sp.ImmutableMatrix(a0), solved)
+
+
+def _nonlinear_rates(system: System, rows) -> dict[str, str]:
+    """{rate a nonlinear constraint determines: that constraint's row label}, checked."""
+    out: dict[str, str] = {}
+    for i, c in enumerate(system.constraints):
+        if c.rates is None:
+            continue
+        d, where = c.rates.dependent, f"constraints[{i}]"
+        if d in out:
+            raise _error(system, c.location, where, f"dot({d}) is already determined by {out[d]}",
+                         "solve each nonlinear constraint for a different rate")
+        if system.independent is not None and d in system.independent:
+            raise _error(system, system.independent_location, "independent",
+                         f"dot({d}) is determined by the nonlinear constraint {where}; it cannot be independent")
+        out[d] = where
+    for where, location, form in rows:
+        clash = [d for d in out if where not in out.values() and form.coefficient(d) != 0]
+        if clash:
+            raise _error(system, location, where,
+                         f"dot({clash[0]}) is determined by the nonlinear constraint {out[clash[0]]}; "
+                         "a Pfaffian relation may not involve it too")
+    return out
+
+
+def _with_nonlinear(system: System, names, names_lin, independent, beta_lin, beta0_lin, nonlinear):
+    """β and β₀ over all rates: the Pfaffian solution, then each nonlinear rate's f(q, u, t) split by NL.split."""
+    k = len(independent)
+    speeds = [S.rate(n) for n in independent]
+    beta, beta0 = sp.zeros(len(names), k), sp.zeros(len(names), 1)
+    rates: dict[sp.Symbol, sp.Expr] = {}
+    for i, n in enumerate(names_lin):
+        beta[names.index(n), :] = beta_lin[i, :]
+        beta0[names.index(n), 0] = beta0_lin[i, 0]
+        rates[S.rate(n)] = sp.Add(*[b * u for b, u in zip(beta_lin.row(i), speeds) if b != 0], beta0_lin[i, 0])
+    by_where = {where: d for d, where in nonlinear.items()}
+    solved = []
+    for i, c in enumerate(system.constraints):
+        d = by_where.get(f"constraints[{i}]")
+        if d is None:
+            continue
+        f = c.rates.solution.xreplace(rates)
+        if f.free_symbols & {S.rate(other) for other in nonlinear}:
+            raise _error(system, c.location, f"constraints[{i}]",
+                         "a nonlinear constraint may involve only rates that the others do not determine nonlinearly")
+        row, rest = NL.split(f, speeds)
+        beta[names.index(d), :] = sp.Matrix([row])
+        beta0[names.index(d), 0] = rest
+        solved.append((d, f))
+    return sp.ImmutableMatrix(beta), sp.ImmutableMatrix(beta0), tuple(solved)
 
 
 def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
@@ -359,7 +424,9 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     velocity = sp.Matrix([S.rate(n) for n in names])
     c = (A * velocity + a0).applyfunc(S.time_differentiator(chain))
     c = c.xreplace({S.rate(n): rates.rate(n) for n in dependent})
-    Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent])
+    # A nonlinear constraint's row (∂g/∂ṙ) holds rates: the dependent ones are put as functions of u.
+    Ad = A.extract(list(range(A.rows)), [names.index(d) for d in dependent]).xreplace(
+        {S.rate(n): rates.rate(n) for n in dependent})
     solution = solve_linear(Ad, -c)
     gamma.update({n: solution[i] for i, n in enumerate(dependent)})
     return gamma

@@ -74,8 +74,13 @@ def linearize(derivation: Derivation, at: Mapping[str, float] | None = None,
     x0 = np.array([point.get(n, 0.0) for n in lay.state], dtype=complex)
     r0 = np.array([point.get(n, 0.0) for n in lay.r], dtype=complex)
     kinematic, mass, forcing = _numeric_functions(derivation, lay, values)
-    A = _jacobian(kinematic, mass, forcing, x0, r0, wrt="x")
-    B = _jacobian(kinematic, mass, forcing, x0, r0, wrt="r")
+    try:
+        A = _jacobian(kinematic, mass, forcing, x0, r0, wrt="x")
+        B = _jacobian(kinematic, mass, forcing, x0, r0, wrt="r")
+    except (ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+        # e.g. sqrt(dot(x)**2 + dot(y)**2) of a nonlinear constraint, not differentiable where it vanishes
+        raise LinearizeError(f"the equations cannot be evaluated or differentiated at this operating point "
+                             f"({exc}); choose another with --at") from None
     return Linearization(lay.state, lay.r, A, B, {**{n: float(v.real) for n, v in zip(lay.state, x0)}})
 
 

@@ -15,6 +15,7 @@ from pathlib import Path
 import sympy as sp
 
 from gacli import frames as F
+from gacli import nonlinear as NL
 from gacli import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.expr.build import BuildError, Scope, build
@@ -269,15 +270,34 @@ class _Builder:
         if isinstance(sides, int):
             self.error(text, where, "a constraint has at most one '=' (write lhs = rhs)", offset=sides)
             return None
-        parts = [self.expression(text, where, self.scopes.form, a, b) for a, b in sides]
+        parts = [self.expression(text, where, self.scopes.constraint, a, b) for a, b in sides]
         if any(p is None for p in parts):
             return None
         expr = parts[0] - parts[1] if len(parts) == 2 else parts[0]
         diffs = {S.differential(n) for n in self.scopes.rate_names} | {S.DT}
+        rates = {S.rate(n) for n in self.scopes.rate_names}
+        if expr.free_symbols & rates or (expr.free_symbols & diffs and not _is_linear_form(expr, diffs)):
+            return self._rate_constraint(expr, parts[0] if len(parts) == 2 else None, text, where)
         if expr.free_symbols & diffs:
             form = self._as_form(expr, text, where)
             return Constraint(form, self.where_of(text), text.text) if form else None
         return self._finite_constraint(expr, text, where)
+
+    def _rate_constraint(self, expr: sp.Expr, lhs: sp.Expr | None, text: Scalar, where: str) -> Constraint | None:
+        """A constraint nonlinear in the rates (docs/nonlinear.md): solved for the rate it determines."""
+        names = self.scopes.rate_names
+        g, kind = NL.rate_form(expr, names)
+        if g is None:
+            self.error(text, where, kind)
+            return None
+        preferred = next((n for n in names if lhs in (S.rate(n), S.differential(n))), None)
+        independent = self.decl.independent
+        solved = NL.solve_for_rate(g, names, preferred, [s.text for s in independent] if independent else None)
+        if isinstance(solved, str):
+            self.error(text, where, solved)
+            return None
+        coefficients, rest = NL.linearized_row(g, names)
+        return Constraint(Form(coefficients, rest), self.where_of(text), text.text, rates=solved)
 
     def _finite_constraint(self, expr: sp.Expr, text: Scalar, where: str) -> Constraint | None:
         """f(q, t) = 0 is used through df = 0."""
@@ -632,6 +652,12 @@ def _split_equation(text: str) -> list[tuple[int, int | None]] | int:
     return [(0, first), (first + 1, None)]
 
 
+def _is_linear_form(expr: sp.Expr, diffs: set[sp.Symbol]) -> bool:
+    """Whether no differential's coefficient holds a differential (cheap: degree two is enough to refuse)."""
+    present = expr.free_symbols & diffs
+    return all(not (sp.diff(expr, d).free_symbols & present) for d in present)
+
+
 def _linearity_problem(expr: sp.Expr, partials: dict[sp.Symbol, sp.Expr]) -> str:
     """Why ``expr`` is not a linear form in the differentials it has ('' when it is).
 
@@ -700,6 +726,7 @@ class _Scopes:
     constant: Scope
     config: Scope
     form: Scope
+    constraint: Scope  # a form's scope, and the rates too: a constraint may be nonlinear in them
     load: Scope
     work: Scope
     rate_names: tuple[str, ...]
@@ -721,11 +748,12 @@ class _Scopes:
         diffs["dt"] = S.DT
         form = Scope(config_values, frates, diffs, refusals, declared, _CONFIG_NOTE)
         load_rates = {**frates, **{(n, 1): S.rate(n) for n in rated}}
+        constraint = Scope(config_values, load_rates, diffs, refusals, declared, _CONFIG_NOTE)
         load_values = {**config_values, **{s.name: S.value(s.name) for s in decl.of_kind("input")}}
         load = Scope(load_values, load_rates, {}, _refusals(kinds, "load"), declared, _LOAD_NOTE)
         work = Scope(load_values, load_rates, diffs, _refusals(kinds, "load"), declared, _LOAD_NOTE)
         chain = {S.rate(f.name, o): S.rate(f.name, o + 1) for f in functions if f.value is None for o in range(4)}
-        return _Scopes(constant, config, form, load, work, tuple(rated), chain)
+        return _Scopes(constant, config, form, constraint, load, work, tuple(rated), chain)
 
 
 def _function_values(functions) -> tuple[dict, dict]:

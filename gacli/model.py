@@ -72,6 +72,15 @@ class QuasiCoordinate(Declared):
 
 
 @dataclass(frozen=True)
+class RateRelation:
+    """A constraint g(q, ṙ, t) = 0 not linear in the rates, solved for one of them (docs/nonlinear.md)."""
+
+    relation: sp.Expr
+    dependent: str
+    solution: sp.Expr
+
+
+@dataclass(frozen=True)
 class Constraint:
     """Σ B_s dq_s + B dt = 0 (eq. 14.1); ``relation`` is f when given as f(q, t) = 0.
 
@@ -84,6 +93,9 @@ class Constraint:
     text: str
     relation: sp.Expr | None = None
     derived: bool = False
+    # Set for a constraint nonlinear in the rates; ``form`` is then its linearization
+    # A = ∂g/∂ṙ, a₀ = g − A ṙ, whose coefficients depend on the rates.
+    rates: RateRelation | None = None
 
 
 @dataclass(frozen=True)

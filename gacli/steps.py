@@ -73,6 +73,9 @@ def rate_relations(d: Derivation, tidy: Tidy) -> Step:
     rates = {n: S.rate(n) for n in names}
     items: list[str | Equation] = ["The relations among the rates, from the constraints (14.1) and the quasi-coordinates (14.2):"]
     for c in s.constraints:
+        if c.rates is not None:  # not linear in the rates: shown as written (docs/nonlinear.md)
+            items.append(Equation(c.rates.relation, sp.S.Zero, ""))
+            continue
         lhs = sum((coef * rates[n] for n, coef in c.form.coefficients), sp.S.Zero) + c.form.dt
         items.append(Equation(lhs, sp.S.Zero, "14.1"))
     for q in s.quasi_coordinates:
@@ -83,7 +86,9 @@ def rate_relations(d: Derivation, tidy: Tidy) -> Step:
     if dependent:
         items.append("Solved for the dependent rates in terms of the independent ones (eq. 14.7):")
         items += [Equation(rates[n], tidy(d.rates.rate(n)), "14.7") for n in dependent]
-        items.append("so virtual displacements satisfy (eqs. 14.8, 14.9):")
+        items.append("so virtual displacements satisfy (eqs. 14.8, 14.9)" + (
+            "; for a rate given by a relation nonlinear in the rates, ṙ = f(q, u, t), Chetaev's rule "
+            "δr = Σ ∂f/∂u_s δq_s:" if d.rates.nonlinear else ":"))
         for n in dependent:
             i = names.index(n)
             rhs = sum((d.beta[i, j] * variation(u) for j, u in enumerate(d.independent)), sp.S.Zero)

@@ -602,6 +602,7 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     worst_gibbs = _Worst([f"∂G/∂{S.rate_name(n, 2)}" for n in independent] if gibbs else [])
     asymmetry, min_eig, physical_eig, bad_sample = 0.0, math.inf, math.inf, ""
     undetermined: set[str] = set()
+    nonlinear = any(c.rates is not None for c in system.constraints)
 
     rng = np.random.default_rng(seed)
     function_symbols = [S.rate(f.name, o) for f in system.free_functions for o in range(_FUNCTION_ORDERS + 1)]
@@ -617,8 +618,12 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
             values.update({a: _mp(rng.uniform(-1.5, 1.5)) for a in speed_rates})
             # Dependent rates from the relations A ṙ + a₀ = 0: the state is admissible.
             try:
-                part = relations({s: values.get(s, 0) for s in relations.symbols})
-                if dependent:
+                # A row nonlinear in the rates (A = ∂g/∂ṙ) is evaluated at the rates found so far: the
+                # Pfaffian rows settle in the first pass, the nonlinear ones in the next.
+                for _ in range(3 if nonlinear else 1):
+                    part = relations({s: values.get(s, 0) for s in relations.symbols})
+                    if not dependent:
+                        break
                     A, a0 = part["A"], part["a0"]
                     rhs = mpmath.matrix([-a0[i] - sum(A[i, j] * values[S.rate(names[j])] for j in ind_idx)
                                          for i in range(m)])
