@@ -17,6 +17,7 @@ import sympy as sp
 from gacli import frames as F
 from gacli import nonlinear as NL
 from gacli import symbols as S
+from gacli import trig
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import FUNCTIONS, ParseError, parse
@@ -704,7 +705,8 @@ def _is_zero(expr: sp.Expr, simplify: bool = True) -> bool:
 
 
 def _offending_term(expr: sp.Expr, present: set) -> str:
-    if not is_small(expr, 400):
+    # A small tree may still multiply out to millions of terms ((dx + x + ... )**100).
+    if not is_small(expr, 400) or trig.expanded_terms(expr, 2_000) > 2_000:
         return "a differential appears inside a power or a function"
     for term in sp.Add.make_args(sp.expand(expr)):
         degree = sum(sp.degree(term, d) for d in present if d in term.free_symbols) if term.is_polynomial(*present) else 2

@@ -4,7 +4,7 @@ Every file in ``tests/hostile/`` starts with ``# expect: <part of the message>``
 Injections that would run code try to create a marker file: ``@MARKER@`` in
 the file text is replaced by an absolute path inside ``tmp_path``, and the
 marker must not exist afterwards. Files are checked with ``--timeout 2``: two
-of them (``exp_tower_in_constraint``, ``power_expansion_in_constraint``) hang
+of them (``exp_tower_in_constraint`` and once ``power_expansion_in_constraint``) hang
 the loader or the rank check, and the per-file budget is what stops them.
 """
 
