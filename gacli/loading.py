@@ -277,8 +277,18 @@ class _Builder:
         expr = parts[0] - parts[1] if len(parts) == 2 else parts[0]
         diffs = {S.differential(n) for n in self.scopes.rate_names} | {S.DT}
         rates = {S.rate(n) for n in self.scopes.rate_names}
-        if expr.free_symbols & rates or (expr.free_symbols & diffs and not _is_linear_form(expr, diffs)):
-            return self._rate_constraint(expr, parts[0] if len(parts) == 2 else None, text, where)
+        try:
+            nonlinear = bool(expr.free_symbols & rates) or bool(expr.free_symbols & diffs) and not _is_linear_form(expr, diffs)
+        except (ArithmeticError, ValueError, TypeError, RecursionError):
+            # SymPy evaluates numbers as it goes; an extreme one (cosh(cosh(1e300))) overflows.
+            self.error(text, where, "this form cannot be evaluated: a number in it is too large")
+            return None
+        if nonlinear:
+            try:
+                return self._rate_constraint(expr, parts[0] if len(parts) == 2 else None, text, where)
+            except (ArithmeticError, ValueError, TypeError, RecursionError):
+                self.error(text, where, "this relation cannot be evaluated: a number in it is too large")
+                return None
         if expr.free_symbols & diffs:
             form = self._as_form(expr, text, where)
             return Constraint(form, self.where_of(text), text.text) if form else None
