@@ -15,7 +15,7 @@ from typing import Annotated, Optional
 import typer
 
 from gacli import __version__
-from gacli.cli_help import Group, choice, example, formats
+from gacli.cli_help import Group, choice, derive_usage, example, formats
 
 app = typer.Typer(
     name="gacli",
@@ -135,7 +135,7 @@ def derive(
     """Derive the Gibbs-Appell equations of a system and print them."""
     from gacli import console
 
-    _derive_usage(format, output, steps, reactions)
+    derive_usage(format, output, steps, reactions)
     with _boundary():
         with _budget(file, timeout) as state:
             derivation = _derive(file, state)
@@ -160,19 +160,6 @@ def derive(
 
             for path in write_files(files, output):
                 console.note(f"wrote {path}")
-
-
-def _derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
-    """Option combinations derive refuses, found before any work is done."""
-    if format == "text" and output is not None:
-        raise typer.BadParameter("--output needs a --format other than text", param_hint="--output")
-    if format == "fmu" and output is None:
-        raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
-                                 param_hint="--output")
-    if reactions and format in ("latex", "fmu"):
-        raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
-    if steps and format not in ("text", "latex"):
-        raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
 
 
 def _text_report(derivation, steps: bool, reactions: bool):

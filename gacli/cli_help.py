@@ -3,13 +3,16 @@
 Typer shows a parameter's Python type beside it (``{file}``, ``<list[str]>``,
 ``<float range>``), which means nothing to someone reading a command's help;
 here every argument shows only its metavar, every command ends with its
-example, and a bad choice gets one plain sentence listing the choices.
+example, a bad choice gets one plain sentence listing the choices, and
+option combinations a command refuses are found before any work.
 Nothing here imports SymPy: ``gacli --help`` stays fast.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Optional
 
 import typer
 from typer.core import TyperArgument, TyperCommand, TyperGroup
@@ -79,3 +82,16 @@ def formats() -> tuple[str, ...]:
     from gacli.emit import EMITTERS
 
     return ("text", *sorted(EMITTERS))
+
+
+def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
+    """Option combinations derive refuses, found before any work is done."""
+    if format == "text" and output is not None:
+        raise typer.BadParameter("--output needs a --format other than text", param_hint="--output")
+    if format == "fmu" and output is None:
+        raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
+                                 param_hint="--output")
+    if reactions and format not in ("text", "python", "c"):
+        raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
+    if steps and format not in ("text", "latex"):
+        raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
