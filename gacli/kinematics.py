@@ -194,14 +194,13 @@ def _nonlinear_rates(system: System, rows) -> dict[str, str]:
 
 def _with_nonlinear(system: System, names, names_lin, independent, beta_lin, beta0_lin, nonlinear):
     """β and β₀ over all rates: the Pfaffian solution, then each nonlinear rate's f(q, u, t) split by NL.split."""
-    k = len(independent)
+    if not nonlinear:  # names_lin is names, in order
+        return beta_lin, beta0_lin, ()
     speeds = [S.rate(n) for n in independent]
-    beta, beta0 = sp.zeros(len(names), k), sp.zeros(len(names), 1)
-    rates: dict[sp.Symbol, sp.Expr] = {}
-    for i, n in enumerate(names_lin):
-        beta[names.index(n), :] = beta_lin[i, :]
-        beta0[names.index(n), 0] = beta0_lin[i, 0]
-        rates[S.rate(n)] = sp.Add(*[b * u for b, u in zip(beta_lin.row(i), speeds) if b != 0], beta0_lin[i, 0])
+    # Lists, not matrix entries set one by one: SymPy's setitem costs k per row.
+    rows = dict(zip(names_lin, beta_lin.tolist()))
+    rests = dict(zip(names_lin, beta0_lin))
+    rates = {S.rate(n): sp.Add(*[b * u for b, u in zip(rows[n], speeds) if b != 0], rests[n]) for n in names_lin}
     by_where = {where: d for d, where in nonlinear.items()}
     solved = []
     for i, c in enumerate(system.constraints):
@@ -212,11 +211,11 @@ def _with_nonlinear(system: System, names, names_lin, independent, beta_lin, bet
         if f.free_symbols & {S.rate(other) for other in nonlinear}:
             raise _error(system, c.location, f"constraints[{i}]",
                          "a nonlinear constraint may involve only rates that the others do not determine nonlinearly")
-        row, rest = NL.split(f, speeds)
-        beta[names.index(d), :] = sp.Matrix([row])
-        beta0[names.index(d), 0] = rest
+        rows[d], rests[d] = NL.split(f, speeds)
         solved.append((d, f))
-    return sp.ImmutableMatrix(beta), sp.ImmutableMatrix(beta0), tuple(solved)
+    k = len(independent)
+    return (sp.ImmutableMatrix(len(names), k, [e for n in names for e in rows[n]]),
+            sp.ImmutableMatrix(len(names), 1, [rests[n] for n in names]), tuple(solved))
 
 
 def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
