@@ -298,6 +298,12 @@ class _Builder:
         """A constraint nonlinear in the rates (docs/nonlinear.md): solved for the rate it determines."""
         names = self.scopes.rate_names
         g, kind = NL.rate_form(expr, names)
+        if g is None and kind == "homogeneous":
+            present = expr.free_symbols & ({S.differential(n) for n in names} | {S.DT})
+            self.error(text, where, f"the form is not linear in the differentials: {_offending_term(expr, present)}, "
+                       "nor homogeneous of degree one in them (as a velocity relation such as "
+                       "dz = -c*sqrt(dx**2 + dy**2) is)")
+            return None
         if g is None:
             self.error(text, where, kind)
             return None

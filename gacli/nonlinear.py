@@ -35,6 +35,9 @@ _POINTS = 4
 def rate_form(expr: sp.Expr, rate_names: Sequence[str]) -> tuple[sp.Expr | None, str]:
     """(g, kind) for a constraint that is not a Pfaffian form, or (None, reason) when it is not a relation.
 
+    The reason "homogeneous" means: differentials, but not homogeneous of
+    degree one in them (the caller names the offending term).
+
     ``kind`` is "rates" (written with dot(x)) or "homogeneous" (differentials,
     homogeneous of degree one). ``expr`` is lhs − rhs of the file's text.
     """
@@ -47,8 +50,7 @@ def rate_form(expr: sp.Expr, rate_names: Sequence[str]) -> tuple[sp.Expr | None,
     if has_rates:
         return expr, "rates"
     if not _homogeneous_of_degree_one(expr, [*diffs, S.DT]):
-        return None, ("the form is not linear in the differentials, and not homogeneous of degree one in them "
-                      "either (so it is not a velocity relation: dz = -c*sqrt(dx**2 + dy**2) is one)")
+        return None, "homogeneous"
     return expr.xreplace({**diffs, S.DT: sp.S.One}), "homogeneous"
 
 

@@ -123,7 +123,7 @@ def test_simulation_conserves_energy_and_keeps_the_constraint(tmp_path):
 
 @pytest.mark.parametrize(("constraint", "words"), [
     ("dot(x)**2 + dot(y)**2 = v**2", "cannot be solved for a dependent rate"),
-    ("dx**2 + dy**2 = v**2*dt**2", "not homogeneous of degree one"),
+    ("dx**2 + dy**2 = v**2*dt**2", "nor homogeneous of degree one"),
     ("dz = -c*sqrt(dot(x)**2 + dy**2)", "either with differentials"),
 ])
 def test_a_relation_that_cannot_be_used_is_a_located_error(constraint, words):
