@@ -10,6 +10,7 @@ import ast
 import dataclasses
 import importlib.util
 import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -62,6 +63,10 @@ bodies: {ball: {mass: 2, position: [0, 0, z]}}
 """
 
 EXTRA = {"shaken": AWKWARD, "bare": BARE}
+# And the hand-written twins kept in tests/cases/ (the rolling disk in format 1):
+# every target is checked on them as on systems/.
+EXTRA.update({p.stem: p.read_text(encoding="utf-8")
+              for p in sorted((Path(__file__).resolve().parent / "cases").glob("*.yaml"))})
 
 
 def extra(name):
