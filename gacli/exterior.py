@@ -126,7 +126,7 @@ def structures(system: System, calculus: Calculus) -> tuple[Structure, ...]:
     for name, found in owners.items():
         if len(found) == 1:
             bodies.setdefault(found[0].name, (found[0], []))[1].append(name)
-    ambiguous = [b for b, prims in bodies.values() if _isotropic(b) and _free_rotation(rows_of[b.name])]
+    ambiguous = [b for b, _ in bodies.values() if _isotropic(b) and _free_rotation(rows_of[b.name])]
     if len(ambiguous) > MAX_AMBIGUOUS_BODIES:
         for b in ambiguous[MAX_AMBIGUOUS_BODIES:]:
             unknown.update((n, f"'{b.name}' has equal moments: its axes may be inertial or its own")

@@ -100,8 +100,13 @@ class Classification:
 
 
 def is_nonlinear(constraint) -> bool:
-    """A constraint not linear in the rates (no Pfaffian form): flagged by the loader when it has them."""
-    return bool(getattr(constraint, "nonlinear", False)) or getattr(constraint, "form", None) is None
+    """A constraint not linear in the rates: no Pfaffian form to test.
+
+    The loader does not make them yet; this accepts the likely spellings of
+    its flag (``nonlinear=True``, ``kind="nonlinear"``) or a missing form.
+    """
+    flagged = bool(getattr(constraint, "nonlinear", False)) or getattr(constraint, "kind", "") == "nonlinear"
+    return flagged or getattr(constraint, "form", None) is None
 
 
 def classify(system: System) -> tuple[Classification, ...]:
