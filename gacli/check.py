@@ -258,11 +258,18 @@ def _check(path: Path, findings: _Findings, verify: bool = False) -> None:
     findings.dependent = dependent_rows(derivation)
     findings(STEP_CLASSIFY)
     findings.classifications = classify(system)
+    findings.diagnostics.extend(_undecided_notes(findings.classifications))
     findings(STEP_MASS)
     findings.mass_matrix = _check_mass_matrix(derivation, findings)
     if verify:
         findings(STEP_VERIFY)
         _verify(system, derivation, findings)
+
+
+def _undecided_notes(classifications: Iterable[Classification]) -> list[Diagnostic]:
+    """Why a verdict is undecided, at the constraint: a note, since an honest 'undecided' is no fault."""
+    return [Diagnostic(c.location, f"{c.verdict}: {c.note}", c.where, severity="note")
+            for c in classifications if c.integrable is None and c.note]
 
 
 def _verify(system, derivation, findings: _Findings) -> None:
@@ -515,7 +522,8 @@ def _file_json(report: FileReport, strict: bool) -> dict:
         "diagnostics": [_diagnostic_json(d) for d in report.diagnostics],
         "classifications": [
             {"kind": c.kind, "where": c.where, "text": c.text, "line": c.location.line,
-             "column": c.location.column, "integrable": c.integrable, "verdict": c.verdict, "method": c.method}
+             "column": c.location.column, "integrable": c.integrable, "verdict": c.verdict, "method": c.method,
+             "test": c.test, "note": c.note}
             for c in report.classifications
         ],
         "mass_matrix": None if mass is None else {

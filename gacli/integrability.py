@@ -4,72 +4,66 @@ A Pfaffian form ω = Σ a_i dx_i runs over the differentials of the
 coordinates, of the quasi-coordinates and of t (time is one more variable);
 its coefficients are functions of the coordinates and t (parameters and the
 free functions of time ride along: a free function Omega has dOmega/dt =
-dot(Omega)). Quasi-coordinates have no value, so no coefficient depends on
-them. Then:
+dot(Omega)). Its exterior derivative dω is computed by :mod:`gacli.exterior`:
+a quasi-coordinate given by a differential is replaced by it, and a
+primitive one is a component of a body's rotation, whose d follows from the
+Maurer-Cartan equations of the rotation group (d(dq_x) is not zero for a
+body turning freely). Then:
 
-* a constraint ω = 0 is integrable (holonomic) iff ω ∧ dω = 0, the Frobenius
-  condition for a single form;
-* a quasi-coordinate dθ = ω is a true coordinate iff ω is closed, dω = 0
-  (then, locally, ω = dθ for a function θ of the coordinates and t).
+* a quasi-coordinate dθ = ω is a true coordinate iff dω = 0;
+* one constraint ω = 0 is integrable on its own iff ω ∧ dω = 0;
+* the Pfaffian constraints ω_1 = … = ω_l = 0 are integrable together iff
+  dω_a ∧ ω_1 ∧ … ∧ ω_l = 0 for every a (Frobenius for the set), that is,
+  iff each dω_a vanishes on the kernel of the constraints.
 
-In components, with c_ij = ∂_i a_j − ∂_j a_i (dω = Σ_{i<j} c_ij dx_i ∧ dx_j)::
+A constraint is reported holonomic when it is integrable alone or the whole
+set is, non-holonomic when neither holds, and undecided otherwise (a
+primitive quasi-coordinate whose structure is unknown, or a test no point
+could decide). "Integrable modulo the others" is not used for one row: it
+can hold for a row of a set whose brackets reach every direction
+(dw = z dx, dz = y dx), where no relation holds at all.
+
+In components, with c_ij the coefficients of dω = Σ_{i<j} c_ij dx_i ∧ dx_j::
 
     dω = 0       ⇔  c_ij = 0                              for all i < j
     ω ∧ dω = 0   ⇔  a_i c_jk − a_j c_ik + a_k c_ij = 0     for all i < j < k
+    set          ⇔  dω_a(X, Y) = 0 for X, Y in a basis of the kernel
 
 Each component is decided by :func:`decide_zero`: ``simplify`` while the
 expression is small, and otherwise (or when simplify leaves something that
-is not a number) by evaluating it at seeded random points.
+is not a number) by evaluating it at seeded random points. When the
+kernel's basis takes too long symbolically (the bicycle), the set's test
+is made at seeded points with the kernel's orthogonal projection.
 
-Each form is tested on its own: a set of constraints can be integrable
-together only if each one is integrable modulo the others, which this module
-does not test.
+A nonlinear constraint (not linear in the rates) has no Pfaffian form: it is
+reported "nonlinear", not tested, and left out of the set.
 """
 
 from __future__ import annotations
 
-import contextlib
 import itertools
-import random
-import signal
-import threading
-import time
-from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import partial
 
 import mpmath
 import sympy as sp
 
-from gacli import symbols as S
 from gacli.coerce import as_expr
 from gacli.errors import GacliError, Location
-from gacli.kinematics import function_chain
+from gacli.evaluate import _DIGITS, _RELATIVE_TOLERANCE, UndefinedValue, evaluate
+from gacli.exterior import Calculus, OneForm, Structure, structures
 from gacli.model import Form, System
+from gacli.zero import (  # noqa: F401 - re-exported
+    _MIN_VALID_POINTS, _SEED, SIMPLIFY_MAX_OPS, Decision, decide_zero, sample_points, time_limit,
+)
 
-# simplify() is tried only below this many operations and for at most this
-# long: it can take minutes even on small expressions (Piecewise, huge
-# integers), and random points decide faster.
-SIMPLIFY_MAX_OPS = 120
-SIMPLIFY_SECONDS = 1.0
-_SEED = 20261122
-_POINTS = 10
-_MIN_VALID_POINTS = 3
-_DIGITS = 40
-_RELATIVE_TOLERANCE = mpmath.mpf("1e-25")
-_HUGE = mpmath.mpf("1e300")
-_EXP_ARGUMENT_LIMIT = 1e4
-
-
-@dataclass(frozen=True)
-class Decision:
-    """Whether an expression is identically zero; ``zero`` is None when undecided.
-
-    ``method`` is "symbolic" (proved by SymPy), "numeric" (random points) or
-    "undecided" (no point could be evaluated).
-    """
-
-    zero: bool | None
-    method: str
+# The set's test needs a basis of the constraints' kernel; sympy's rref can
+# take minutes on the bicycle's rows, and seeded points decide as well.
+KERNEL_SECONDS = 2.0
+_NUMERIC_POINTS = 6
+NONLINEAR_VERDICT = "nonlinear (non-holonomic unless integrable; not tested)"
+_AXES_NOTE = ("the verdict depends on whether the rotation components are along body or inertial axes "
+              "(equal moments allow both)")
 
 
 @dataclass(frozen=True)
@@ -78,8 +72,11 @@ class Classification:
 
     ``kind`` is "constraint" or "quasi_coordinate"; ``integrable`` is True
     for a holonomic constraint or a quasi-coordinate that is a coordinate,
-    None when undecided. ``method`` is "relation" (a constraint written as
-    f(q, t) = 0), "symbolic", "numeric" or "undecided".
+    None when undecided or not tested. ``method`` is "relation" (a constraint
+    written as f(q, t) = 0), "symbolic", "numeric", "undecided" or "not
+    tested". ``test`` says which condition decided: "alone" (ω ∧ dω = 0),
+    "set" (Frobenius for all the Pfaffian constraints together), "closed"
+    (dω = 0), "relation" or "nonlinear"; ``note`` says why when undecided.
     """
 
     kind: str
@@ -88,11 +85,13 @@ class Classification:
     location: Location
     integrable: bool | None
     method: str
+    test: str = ""
+    note: str = ""
 
     @property
     def verdict(self) -> str:
-        if self.method == "nonlinear":
-            return "nonlinear"
+        if self.test == "nonlinear":
+            return NONLINEAR_VERDICT
         if self.integrable is None:
             return "undecided"
         if self.kind == "constraint":
@@ -100,78 +99,211 @@ class Classification:
         return "a coordinate" if self.integrable else "not a coordinate"
 
 
+def is_nonlinear(constraint) -> bool:
+    """A constraint not linear in the rates (docs/nonlinear.md): its form is a linearization, not a Pfaffian form."""
+    return constraint.rates is not None
+
+
 def classify(system: System) -> tuple[Classification, ...]:
-    """Classify every constraint and every quasi-coordinate given by a differential."""
-    out = []
-    for i, constraint in enumerate(system.constraints):
-        where = f"constraints[{i}]"
-        if constraint.relation is not None:
-            out.append(Classification("constraint", where, constraint.text, constraint.location, True, "relation"))
-            continue
-        if constraint.rates is not None:  # nonlinear in the rates: a kinematic constraint, never holonomic here
-            out.append(Classification("constraint", where, constraint.text, constraint.location, False, "nonlinear"))
-            continue
-        decision = is_integrable(constraint.form, system)
-        out.append(Classification("constraint", where, constraint.text, constraint.location,
-                                  decision.zero, decision.method))
+    """Classify every constraint and every quasi-coordinate given by a differential.
+
+    With bodies of equal moments, whose rotation may be in body or inertial
+    axes, each choice is tried and a verdict kept only when all agree.
+    """
+    calculus = Calculus(system)
+    options = [_classify_with(system, calculus, s) for s in structures(system, calculus)]
+    return tuple(_agreed(found) for found in zip(*options))
+
+
+def _agreed(found: tuple[Classification, ...]) -> Classification:
+    first = found[0]
+    if all(f.integrable == first.integrable for f in found[1:]):
+        return first
+    return replace(first, integrable=None, method="undecided", note=_AXES_NOTE)
+
+
+def _classify_with(system: System, calculus: Calculus, structure: Structure) -> list[Classification]:
+    pfaffian = {i: c for i, c in enumerate(system.constraints) if not is_nonlinear(c)}
+    exteriors = {i: _Exterior(calculus.one_form(c.form), calculus, structure) for i, c in pfaffian.items()}
+    alone = {i: _integrable(exteriors[i]) for i, c in pfaffian.items() if c.relation is None}
+    together = None
+    if len(pfaffian) > 1 and any(d.zero is not True for d in alone.values()):
+        together = set_integrable(list(exteriors.values()), calculus)
+    out = [_constraint_verdict(i, c, alone.get(i), together, exteriors.get(i))
+           for i, c in enumerate(system.constraints)]
     for q in system.quasi_coordinates:
         if q.differential is None:
             continue
-        decision = is_closed(q.differential, system)
+        exterior = _Exterior(calculus.one_form(q.differential), calculus, structure)
+        decision = _closed(exterior)
         out.append(Classification("quasi_coordinate", f"quasi_coordinates.{q.name}", _form_text(q.differential),
-                                  q.location, decision.zero, decision.method))
-    return tuple(out)
+                                  q.location, decision.zero, decision.method, "closed", exterior.note))
+    return out
+
+
+def _constraint_verdict(i: int, c, own: Decision | None, together: Decision | None,
+                        exterior: _Exterior | None) -> Classification:
+    """Holonomic when integrable alone or with the others; non-holonomic only when both tests say no."""
+    found = partial(Classification, "constraint", f"constraints[{i}]", c.text, c.location)
+    if exterior is None:
+        return found(None, "not tested", "nonlinear",
+                     "not linear in the rates: no Pfaffian form for the Frobenius test")
+    if c.relation is not None:
+        return found(True, "relation", "relation")
+    if own.zero is True:
+        return found(True, own.method, "alone")
+    if together is not None and together.zero is True:
+        return found(True, together.method, "set")
+    if own.zero is False and (together is None or together.zero is False):
+        return found(False, own.method, "alone")
+    note = exterior.note or "not integrable alone, and the test of the whole set is undecided"
+    return found(None, "undecided", "set" if exterior.note == "" else "alone", note)
 
 
 def is_closed(form: Form, system: System) -> Decision:
-    """dω = 0 ?"""
-    exterior = _Exterior(form, system)
-    return _all_zero(exterior.d_component(i, j) for i, j in itertools.combinations(exterior.variables, 2))
+    """dω = 0 ? (body axes for every rotation)"""
+    calculus = Calculus(system)
+    return _closed(_Exterior(calculus.one_form(form), calculus, structures(system, calculus)[0]))
 
 
 def is_integrable(form: Form, system: System) -> Decision:
-    """ω ∧ dω = 0 ?"""
-    exterior = _Exterior(form, system)
-    return _all_zero(exterior.wedge_component(i, j, k)
-                     for i, j, k in itertools.combinations(exterior.variables, 3))
+    """ω ∧ dω = 0 ? (body axes for every rotation)"""
+    calculus = Calculus(system)
+    return _integrable(_Exterior(calculus.one_form(form), calculus, structures(system, calculus)[0]))
+
+
+def _closed(exterior: _Exterior) -> Decision:
+    if exterior.unknown:
+        return Decision(None, "undecided")
+    return _all_zero(exterior.d_component(i, j) for i, j in itertools.combinations(exterior.variables, 2))
+
+
+def _integrable(exterior: _Exterior) -> Decision:
+    if exterior.unknown:
+        return Decision(None, "undecided")
+    return _all_zero(exterior.wedge_component(i, j, k) for i, j, k in itertools.combinations(exterior.variables, 3))
 
 
 class _Exterior:
-    """The coefficients of one form and the derivatives its exterior derivative needs."""
+    """One form ω = Σ a_i dx_i and its exterior derivative dω = Σ_{i<j} c_ij dx_i ∧ dx_j.
 
-    def __init__(self, form: Form, system: System) -> None:
-        self.coordinates = {c.name for c in system.coordinates}
-        self.chain = function_chain(system)
-        self.a = {name: coefficient for name, coefficient in form.coefficients}
-        self.a["t"] = form.dt
-        self.variables = self._active(system)
-        self._d: dict[tuple[str, str], sp.Expr] = {}
+    c_ij = ∂_i a_j − ∂_j a_i, plus a_π times the components of dπ for each
+    primitive quasi-coordinate π (its structure, :mod:`gacli.exterior`).
+    """
 
-    def _active(self, system: System) -> list[str]:
-        """Variables with a coefficient, or on which some coefficient depends (declaration order)."""
-        free = set().union(*(as_expr(c).free_symbols for c in self.a.values()))
-        timed = S.T in free or bool(free & set(self.chain))
-        names = list(system.rate_names) + ["t"]
-        return [n for n in names if self.a.get(n, 0) != 0 or S.value(n) in free and n in self.coordinates
-                or n == "t" and timed]
-
-    def partial(self, expr: sp.Expr, variable: str) -> sp.Expr:
-        if variable == "t":
-            return S.time_derivative(as_expr(expr), self.chain)
-        if variable in self.coordinates:
-            return sp.diff(expr, S.value(variable))
-        return sp.S.Zero  # a quasi-coordinate has no value for a coefficient to depend on
+    def __init__(self, a: OneForm, calculus: Calculus, structure: Structure) -> None:
+        self.a = a
+        self.unknown = [n for n in a if n in structure.unknown]
+        self.note = "; ".join(f"d{n}: {structure.unknown[n]}" for n in self.unknown)
+        d = calculus.d_coefficients(a)
+        for name, coefficient in a.items():
+            for key, value in structure.derivatives.get(name, {}).items():
+                d[key] = d.get(key, sp.S.Zero) + coefficient * value
+        self.d = {key: value for key, value in d.items() if value != 0}
+        self.variables = sorted(set(a) | {v for key in self.d for v in key}, key=calculus.order.get)
 
     def d_component(self, i: str, j: str) -> sp.Expr:
-        """c_ij = ∂_i a_j − ∂_j a_i."""
-        if (i, j) not in self._d:
-            self._d[(i, j)] = self.partial(self.a.get(j, 0), i) - self.partial(self.a.get(i, 0), j)
-        return self._d[(i, j)]
+        return self.d.get((i, j), sp.S.Zero)
 
     def wedge_component(self, i: str, j: str, k: str) -> sp.Expr:
         a = self.a
         return (a.get(i, 0) * self.d_component(j, k) - a.get(j, 0) * self.d_component(i, k)
                 + a.get(k, 0) * self.d_component(i, j))
+
+
+# -- the set of constraints ------------------------------------------------------------------
+
+def set_integrable(exteriors: list[_Exterior], calculus: Calculus) -> Decision:
+    """Frobenius for the set ω_1 = … = ω_l = 0: dω_a ∧ ω_1 ∧ … ∧ ω_l = 0 for every a.
+
+    Equivalently dω_a vanishes on the kernel D of the constraints:
+    dω_a(X, Y) = 0 for X, Y in a basis of D (the form is zero on D ⇔ its
+    wedge with all the ω's is zero).
+    """
+    if any(e.unknown for e in exteriors):
+        return Decision(None, "undecided")
+    variables = sorted(set().union(*(e.variables for e in exteriors)), key=calculus.order.get)
+    rows = sp.Matrix([[e.a.get(v, sp.S.Zero) for v in variables] for e in exteriors])
+    kernel = _kernel(rows)
+    if kernel is None:
+        return _numeric_set(exteriors, variables)
+    index = {v: n for n, v in enumerate(variables)}
+    return _all_zero(component for e in exteriors for component in _on_kernel(e, kernel, index))
+
+
+class _TooSlow(Exception):
+    pass
+
+
+def _kernel(rows: sp.Matrix) -> list[sp.Matrix] | None:
+    """A basis of the kernel, pivots chosen by decide_zero (rref's default test misses sin² + cos² − 1)."""
+    try:
+        with time_limit(KERNEL_SECONDS, _TooSlow):
+            return rows.nullspace(iszerofunc=lambda e: decide_zero(e).zero)
+    except GacliError:
+        raise
+    except Exception:  # noqa: BLE001 - _TooSlow, or SymPy gave up: points decide
+        return None
+
+
+def _on_kernel(exterior: _Exterior, kernel: list[sp.Matrix], index: dict[str, int]):
+    for x, y in itertools.combinations(kernel, 2):
+        yield sp.Add(*(c * (x[index[i]] * y[index[j]] - x[index[j]] * y[index[i]])
+                       for (i, j), c in exterior.d.items()))
+
+
+def _numeric_set(exteriors: list[_Exterior], variables: list[str]) -> Decision:
+    """The set's test at seeded points: P C_a P = 0, with P the orthogonal projection on D."""
+    entries = [c for e in exteriors for c in list(e.a.values()) + list(e.d.values())]
+    symbols = set().union(*(as_expr(c).free_symbols for c in entries))
+    points = (sample_points(symbols, _NUMERIC_POINTS // 2)
+              + sample_points(symbols, _NUMERIC_POINTS // 2, seed=_SEED + 1, signed=True))
+    valid = 0
+    for point in points:
+        with mpmath.workdps(_DIGITS):
+            try:
+                residual, scale = _projected(exteriors, variables, point)
+            except (UndefinedValue, ZeroDivisionError):
+                continue
+            valid += 1
+            if residual > _RELATIVE_TOLERANCE * max(scale, 1):
+                return Decision(False, "numeric")
+    return Decision(True, "numeric") if valid >= _MIN_VALID_POINTS else Decision(None, "undecided")
+
+
+def _projected(exteriors: list[_Exterior], variables: list[str], point) -> tuple[mpmath.mpf, mpmath.mpf]:
+    """(largest entry of P C_a P, largest entry of C_a) over the constraints a."""
+    n = len(variables)
+    projection = mpmath.eye(n)
+    for row in _orthonormal([[_value(e.a.get(v), point) for v in variables] for e in exteriors]):
+        projection -= row.T * row
+    residual = scale = mpmath.mpf(0)
+    for e in exteriors:
+        c = mpmath.matrix(n, n)
+        for (i, j), value in e.d.items():
+            v = _value(value, point)
+            c[variables.index(i), variables.index(j)], c[variables.index(j), variables.index(i)] = v, -v
+        r = projection * c * projection
+        residual = max([residual] + [abs(r[p, q]) for p in range(n) for q in range(n)])
+        scale = max([scale] + [abs(c[p, q]) for p in range(n) for q in range(n)])
+    return residual, scale
+
+
+def _orthonormal(rows: list[list[mpmath.mpf]]) -> list[mpmath.matrix]:
+    """Gram-Schmidt, dropping a row that repeats the others (two wheels on one axle)."""
+    basis: list[mpmath.matrix] = []
+    for values in rows:
+        row = mpmath.matrix([values])
+        size = mpmath.norm(row)
+        for u in basis:
+            row -= (row * u.T)[0, 0] * u
+        if mpmath.norm(row) > _RELATIVE_TOLERANCE * max(size, 1):
+            basis.append(row / mpmath.norm(row))
+    return basis
+
+
+def _value(expr, point) -> mpmath.mpf:
+    return mpmath.mpf(0) if expr is None else evaluate(as_expr(expr), point)[0]
 
 
 def _all_zero(components) -> Decision:
@@ -186,231 +318,6 @@ def _all_zero(components) -> Decision:
         elif decision.method == "numeric":
             method = "numeric"
     return Decision(None, "undecided") if undecided else Decision(True, method)
-
-
-def decide_zero(expr, seed: int = _SEED) -> Decision:
-    """Is ``expr`` identically zero? simplify() when small, else random points."""
-    expr = as_expr(expr)
-    if expr == 0:
-        return Decision(True, "symbolic")
-    if expr.is_Number:
-        return Decision(False, "symbolic")
-    simpler = _simplified(expr) if sp.count_ops(expr) <= SIMPLIFY_MAX_OPS else None
-    if simpler == 0:
-        return Decision(True, "symbolic")
-    if simpler is not None and simpler.is_Number and simpler.is_finite:
-        return Decision(False, "symbolic")
-    return _numeric_zero(expr, seed)
-
-
-class _TooSlow(Exception):
-    pass
-
-
-def _simplified(expr: sp.Expr) -> sp.Expr | None:
-    """simplify(expr), or None when it is slow or fails (then random points decide)."""
-    try:
-        with time_limit(SIMPLIFY_SECONDS, _TooSlow):
-            return sp.simplify(expr)
-    except GacliError:  # an enclosing time budget ran out: not simplify's failure
-        raise
-    except Exception:  # noqa: BLE001 - _TooSlow, or SymPy gave up (PolynomialError, ...)
-        return None
-
-
-@contextlib.contextmanager
-def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[bool]:
-    """Raise ``error()`` inside the block once ``seconds`` have passed; yields whether armed.
-
-    SIGALRM, so only in the main thread (elsewhere nothing is armed). Limits
-    nest: an enclosing limit that ends sooner is left to fire by itself, and
-    the enclosing handler and timer are restored afterwards. The alarm
-    repeats until the block gives up, in case a library swallows the error.
-    """
-    usable = hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
-    outer_handler = signal.getsignal(signal.SIGALRM) if usable else None
-    outer_left, outer_interval = signal.getitimer(signal.ITIMER_REAL) if usable else (0.0, 0.0)
-    if not usable or not seconds or seconds <= 0 or outer_handler is None or 0 < outer_left <= seconds:
-        yield False
-        return
-    alarm = _Alarm(error)
-    started = time.monotonic()
-    signal.signal(signal.SIGALRM, alarm.fire)
-    signal.setitimer(signal.ITIMER_REAL, seconds, min(seconds, 0.2))
-    try:
-        yield True
-    finally:
-        while True:  # an alarm may land between two statements here: retry until disarmed
-            try:
-                alarm.armed = False
-                signal.setitimer(signal.ITIMER_REAL, 0)
-                signal.signal(signal.SIGALRM, outer_handler)
-                if outer_left > 0:
-                    left = max(outer_left - (time.monotonic() - started), 1e-3)
-                    signal.setitimer(signal.ITIMER_REAL, left, outer_interval)
-                break
-            except BaseException as exc:  # noqa: BLE001 - re-raised unless it is our own late alarm
-                if exc is not alarm.raised:
-                    raise
-
-
-class _Alarm:
-    """The SIGALRM handler of one time limit; remembers what it raised."""
-
-    def __init__(self, error: Callable[[], BaseException]) -> None:
-        self.error = error
-        self.armed = True
-        self.raised: BaseException | None = None
-
-    def fire(self, signum, frame) -> None:
-        if self.armed:
-            self.raised = self.error()
-            raise self.raised
-
-
-def _numeric_zero(expr: sp.Expr, seed: int) -> Decision:
-    symbols = sorted(expr.free_symbols, key=lambda s: s.name)
-    valid = 0
-    # Positive points suit sqrt and log; signed ones catch abs and sign.
-    points = sample_points(symbols, _POINTS // 2, seed) + sample_points(symbols, _POINTS // 2, seed + 1, signed=True)
-    for point in points:
-        try:
-            value, scale = evaluate(expr, point)
-        except UndefinedValue:
-            continue
-        valid += 1
-        if abs(value) > _RELATIVE_TOLERANCE * max(scale, 1):
-            return Decision(False, "numeric")
-    return Decision(True, "numeric") if valid >= _MIN_VALID_POINTS else Decision(None, "undecided")
-
-
-def sample_points(symbols, count: int, seed: int = _SEED, signed: bool = False) -> list[dict[sp.Symbol, float]]:
-    """``count`` deterministic generic points: values in [0.3, 1.7] (either sign when ``signed``)."""
-    rng = random.Random(seed)
-    ordered = sorted(symbols, key=lambda s: s.name)
-    points = []
-    for _ in range(count):
-        point = {}
-        for s in ordered:
-            value = rng.uniform(0.3, 1.7)
-            point[s] = -value if signed and rng.random() < 0.5 else value
-        points.append(point)
-    return points
-
-
-# -- a bounded numeric evaluator ------------------------------------------------
-# sympy's evalf can run for hours on exp(exp(exp(100))); this walks the tree
-# once with mpmath and gives up on anything huge, complex or unknown.
-
-class UndefinedValue(ValueError):
-    """The expression has no finite real value at the point (or cannot be evaluated)."""
-
-
-def evaluate(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> tuple[mpmath.mpf, mpmath.mpf]:
-    """(value, scale) of ``expr`` at ``point``; ``scale`` bounds the size of the terms summed.
-
-    Raises:
-        UndefinedValue: outside the real domain, too large, or not evaluable.
-    """
-    if expr is sp.S.Zero:
-        # Most entries of a wide system's M are zero: its check evaluates all k² of them.
-        return mpmath.mpf(0), mpmath.mpf(0)
-    with mpmath.workdps(_DIGITS):
-        try:
-            return _Evaluator(point).value(as_expr(expr))
-        except (ZeroDivisionError, OverflowError, ValueError, TypeError, RecursionError) as exc:
-            if isinstance(exc, UndefinedValue):
-                raise
-            raise UndefinedValue(str(exc)) from None
-
-
-_ONE_ARGUMENT: dict[type, Callable] = {
-    sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan, sp.asin: mpmath.asin,
-    sp.acos: mpmath.acos, sp.atan: mpmath.atan, sp.sinh: mpmath.sinh, sp.cosh: mpmath.cosh,
-    sp.tanh: mpmath.tanh, sp.exp: mpmath.exp, sp.log: mpmath.log, sp.Abs: abs, sp.sign: mpmath.sign,
-    sp.cot: mpmath.cot, sp.sec: mpmath.sec, sp.csc: mpmath.csc,
-}
-_EXPONENTIAL = (sp.exp, sp.sinh, sp.cosh)
-
-
-class _Evaluator:
-    def __init__(self, point: Mapping[sp.Symbol, float]) -> None:
-        self.point = point
-        # Derived expressions share subexpressions (the bicycle's are millions of
-        # nodes as trees): each distinct one is evaluated once.
-        self.memo: dict[sp.Basic, tuple[mpmath.mpf, mpmath.mpf]] = {}
-
-    def value(self, expr: sp.Expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        value, scale = self._node(expr)
-        return value, max(scale, abs(value))
-
-    def _node(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        known = self.memo.get(expr)
-        if known is None:
-            known = self.memo[expr] = self._evaluate(expr)
-        return known
-
-    def _evaluate(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        if expr.is_Symbol:
-            if expr not in self.point:
-                raise UndefinedValue(f"no value for {expr}")
-            return self._real(mpmath.mpf(self.point[expr]))
-        if expr.is_Rational:
-            return self._real(mpmath.mpf(expr.p) / expr.q)
-        if expr.is_Float:
-            return self._real(mpmath.mpf(expr))
-        if expr is sp.pi:
-            return self._real(+mpmath.pi)
-        if expr is sp.E:
-            return self._real(+mpmath.e)
-        if expr.is_Add:
-            parts = [self._node(a) for a in expr.args]
-            return self._real(mpmath.fsum(v for v, _ in parts), sum(s for _, s in parts))
-        if expr.is_Mul:
-            parts = [self._node(a) for a in expr.args]
-            return self._real(mpmath.fprod(v for v, _ in parts), mpmath.fprod(s for _, s in parts))
-        if expr.is_Pow:
-            return self._power(expr)
-        if expr.func in _ONE_ARGUMENT and len(expr.args) == 1:
-            return self._function(expr)
-        if expr.func in (sp.DiracDelta, sp.Heaviside) and len(expr.args) == 1:
-            return self._step(expr)
-        if expr.func is sp.atan2:
-            (y, sy), (x, sx) = self._node(expr.args[0]), self._node(expr.args[1])
-            return self._real(mpmath.atan2(y, x), max(sy, sx))
-        raise UndefinedValue(f"cannot evaluate {type(expr).__name__}")
-
-    def _power(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        (base, sb), (exponent, se) = self._node(expr.base), self._node(expr.exp)
-        if base == 0 and exponent <= 0:
-            raise UndefinedValue("0 to a non-positive power")
-        if base != 0 and abs(exponent * mpmath.log(abs(base))) > _EXP_ARGUMENT_LIMIT:
-            raise UndefinedValue("power too large")
-        return self._real(mpmath.power(base, exponent), max(sb, se))
-
-    def _step(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        """DiracDelta and Heaviside (from differentiating sign and abs), away from their jump."""
-        argument, _ = self._node(expr.args[0])
-        if argument == 0:
-            raise UndefinedValue("at the jump of a step")
-        return self._real(mpmath.mpf(0) if expr.func is sp.DiracDelta else mpmath.mpf(argument > 0))
-
-    def _function(self, expr) -> tuple[mpmath.mpf, mpmath.mpf]:
-        argument, scale = self._node(expr.args[0])
-        if expr.func in _EXPONENTIAL and abs(argument) > _EXP_ARGUMENT_LIMIT:
-            raise UndefinedValue("exponential too large")
-        return self._real(_ONE_ARGUMENT[expr.func](argument), scale)
-
-    @staticmethod
-    def _real(value, scale=None) -> tuple[mpmath.mpf, mpmath.mpf]:
-        if isinstance(value, mpmath.mpc):
-            if abs(value.imag) > _RELATIVE_TOLERANCE * max(abs(value.real), 1):
-                raise UndefinedValue("outside the real domain")
-            value = value.real
-        value = mpmath.mpf(value)
-        if not mpmath.isfinite(value) or abs(value) > _HUGE:
-            raise UndefinedValue("not finite")
-        return value, abs(value) if scale is None else max(abs(value), scale)
 
 
 def _form_text(form: Form) -> str:

@@ -408,3 +408,38 @@ def test_machine_formats_quote_file_text_shortly_and_escaped():
     for text in (to_json(report), to_github(report)):
         assert len(text) < 5_000
         assert "\x1b" not in text and "\x07" not in text
+
+
+# -- classification: primitive quasi-coordinates (#19) ---------------------------------------
+
+SPHERE_ON_A_FIXED_PLANE = """\
+gacli: 1
+name: sphere
+parameters: [M, a, I]
+coordinates: [x, y]
+quasi_coordinates: [q_x, q_y, q_z]
+constraints: ['dx - a*dq_y = 0', 'dy + a*dq_x = 0']
+bodies:
+  sphere: {mass: M, position: [x, y, a], inertia: [I, I, I], rotation: [ROTATION]}
+"""
+
+
+def test_the_rolling_sphere_is_non_holonomic_in_the_json_report(tmp_path):
+    path = write(tmp_path, "sphere.yaml", SPHERE_ON_A_FIXED_PLANE.replace("ROTATION", "dq_x, dq_y, dq_z"))
+    result = invoke("--format", "json", str(path))
+    rows = json.loads(result.stdout)["files"][0]["classifications"]
+    assert [(r["verdict"], r["integrable"], r["test"]) for r in rows] == [("non-holonomic", False, "alone")] * 2
+
+
+def test_an_unknown_structure_is_undecided_with_a_note_that_never_fails(tmp_path):
+    # q_y in no rotation: the body turns by other means, so nothing says what d(dq_y) is.
+    text = (SPHERE_ON_A_FIXED_PLANE.replace(", inertia: [I, I, I], rotation: [ROTATION]", "")
+            .replace(", 'dy + a*dq_x = 0'", "").replace("[M, a, I]", "[M, a]"))
+    path = write(tmp_path, "unknown.yaml", text)
+    result = invoke("--strict", "--format", "json", str(path))
+    report = json.loads(result.stdout)["files"][0]
+    assert result.exit_code == 0
+    assert [r["verdict"] for r in report["classifications"]] == ["undecided"]
+    notes = [d for d in report["diagnostics"] if d["severity"] == "note"]
+    assert [(d["where"], d["line"]) for d in notes] == [("constraints[0]", 6)]
+    assert "dq_y: in no body's rotation" in notes[0]["message"]

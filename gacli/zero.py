@@ -1,0 +1,153 @@
+"""Is an expression identically zero? simplify() while it is small, else seeded random points.
+
+Split out of :mod:`gacli.integrability` (which re-exports these names) so
+that the exterior calculus of :mod:`gacli.exterior` and the classification
+can both use it. Also the SIGALRM time limit every step uses.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import random
+import signal
+import threading
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.coerce import as_expr
+from gacli.errors import GacliError
+from gacli.evaluate import _RELATIVE_TOLERANCE, UndefinedValue, evaluate
+
+# simplify() is tried only below this many operations and for at most this
+# long: it can take minutes even on small expressions (Piecewise, huge
+# integers), and random points decide faster.
+SIMPLIFY_MAX_OPS = 120
+SIMPLIFY_SECONDS = 1.0
+_SEED = 20261122
+_POINTS = 10
+_MIN_VALID_POINTS = 3
+
+
+@dataclass(frozen=True)
+class Decision:
+    """Whether an expression is identically zero; ``zero`` is None when undecided.
+
+    ``method`` is "symbolic" (proved by SymPy), "numeric" (random points) or
+    "undecided" (no point could be evaluated).
+    """
+
+    zero: bool | None
+    method: str
+
+
+def decide_zero(expr, seed: int = _SEED) -> Decision:
+    """Is ``expr`` identically zero? simplify() when small, else random points."""
+    expr = as_expr(expr)
+    if expr == 0:
+        return Decision(True, "symbolic")
+    if expr.is_Number:
+        return Decision(False, "symbolic")
+    simpler = _simplified(expr) if sp.count_ops(expr) <= SIMPLIFY_MAX_OPS else None
+    if simpler == 0:
+        return Decision(True, "symbolic")
+    if simpler is not None and simpler.is_Number and simpler.is_finite:
+        return Decision(False, "symbolic")
+    return _numeric_zero(expr, seed)
+
+
+class _TooSlow(Exception):
+    pass
+
+
+def _simplified(expr: sp.Expr) -> sp.Expr | None:
+    """simplify(expr), or None when it is slow or fails (then random points decide)."""
+    try:
+        with time_limit(SIMPLIFY_SECONDS, _TooSlow):
+            return sp.simplify(expr)
+    except GacliError:  # an enclosing time budget ran out: not simplify's failure
+        raise
+    except Exception:  # noqa: BLE001 - _TooSlow, or SymPy gave up (PolynomialError, ...)
+        return None
+
+
+@contextlib.contextmanager
+def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[bool]:
+    """Raise ``error()`` inside the block once ``seconds`` have passed; yields whether armed.
+
+    SIGALRM, so only in the main thread (elsewhere nothing is armed). Limits
+    nest: an enclosing limit that ends sooner is left to fire by itself, and
+    the enclosing handler and timer are restored afterwards. The alarm
+    repeats until the block gives up, in case a library swallows the error.
+    """
+    usable = hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
+    outer_handler = signal.getsignal(signal.SIGALRM) if usable else None
+    outer_left, outer_interval = signal.getitimer(signal.ITIMER_REAL) if usable else (0.0, 0.0)
+    if not usable or not seconds or seconds <= 0 or outer_handler is None or 0 < outer_left <= seconds:
+        yield False
+        return
+    alarm = _Alarm(error)
+    started = time.monotonic()
+    signal.signal(signal.SIGALRM, alarm.fire)
+    signal.setitimer(signal.ITIMER_REAL, seconds, min(seconds, 0.2))
+    try:
+        yield True
+    finally:
+        while True:  # an alarm may land between two statements here: retry until disarmed
+            try:
+                alarm.armed = False
+                signal.setitimer(signal.ITIMER_REAL, 0)
+                signal.signal(signal.SIGALRM, outer_handler)
+                if outer_left > 0:
+                    left = max(outer_left - (time.monotonic() - started), 1e-3)
+                    signal.setitimer(signal.ITIMER_REAL, left, outer_interval)
+                break
+            except BaseException as exc:  # noqa: BLE001 - re-raised unless it is our own late alarm
+                if exc is not alarm.raised:
+                    raise
+
+
+class _Alarm:
+    """The SIGALRM handler of one time limit; remembers what it raised."""
+
+    def __init__(self, error: Callable[[], BaseException]) -> None:
+        self.error = error
+        self.armed = True
+        self.raised: BaseException | None = None
+
+    def fire(self, signum, frame) -> None:
+        if self.armed:
+            self.raised = self.error()
+            raise self.raised
+
+
+def _numeric_zero(expr: sp.Expr, seed: int) -> Decision:
+    symbols = sorted(expr.free_symbols, key=lambda s: s.name)
+    valid = 0
+    # Positive points suit sqrt and log; signed ones catch abs and sign.
+    points = sample_points(symbols, _POINTS // 2, seed) + sample_points(symbols, _POINTS // 2, seed + 1, signed=True)
+    for point in points:
+        try:
+            value, scale = evaluate(expr, point)
+        except UndefinedValue:
+            continue
+        valid += 1
+        if abs(value) > _RELATIVE_TOLERANCE * max(scale, 1):
+            return Decision(False, "numeric")
+    return Decision(True, "numeric") if valid >= _MIN_VALID_POINTS else Decision(None, "undecided")
+
+
+def sample_points(symbols, count: int, seed: int = _SEED, signed: bool = False) -> list[dict[sp.Symbol, float]]:
+    """``count`` deterministic generic points: values in [0.3, 1.7] (either sign when ``signed``)."""
+    rng = random.Random(seed)
+    ordered = sorted(symbols, key=lambda s: s.name)
+    points = []
+    for _ in range(count):
+        point = {}
+        for s in ordered:
+            value = rng.uniform(0.3, 1.7)
+            point[s] = -value if signed and rng.random() < 0.5 else value
+        points.append(point)
+    return points
