@@ -333,8 +333,12 @@ class _Builder(RollingContacts):
             return None
         if node.text in self._point_decls:  # declared later: resolved now; its own errors are reported there
             return self._resolve_point(self._point_decls[node.text])
-        choices = set(self.points) | {b.name for b in self.decl.bodies}
-        self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, choices))
+        bodies = {b.name for b in self.decl.bodies}
+        if node.text in bodies:  # its name is not its centre's: say so rather than suggest itself
+            self.error(node, where, f"'{node.text}' is a body, not a point",
+                       "declare a point under 'points' and give it as the body's position")
+            return None
+        self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, set(self.points) | bodies))
         return None
 
     # -- frames and points -------------------------------------------------
