@@ -16,7 +16,7 @@ import sympy.physics.mechanics as me
 from conftest import derived
 from gacli.equations import derive
 from gacli.loading import loads
-from test_frames import close, gacli_accelerations
+from test_frames import close, gacli_accelerations, kane_accelerations
 
 T = me.dynamicsymbols._t
 
@@ -222,3 +222,57 @@ def zxz(phi: float, theta: float, psi: float) -> np.ndarray:
         R[i, i], R[i, j], R[j, i], R[j, j] = c, -s, s, c
         return R
     return turn(2, phi) @ turn(0, theta) @ turn(2, psi)
+
+
+# -- a wheel on an incline -------------------------------------------------------------------
+
+DISK_ON_INCLINE = """
+gacli: 1
+name: disk_on_incline
+parameters: [m, r, g, alpha]
+coordinates: [x, y, yaw, lean, spin]
+independent: [yaw, lean, spin]
+frames:
+  plane: {rotations: [[y, alpha]]}
+  heading: {parent: plane, rotations: [[z, yaw]]}
+  leaned: {parent: heading, rotations: [[x, lean]]}
+  disk: {parent: leaned, rotations: [[y, spin]]}
+points:
+  contact: {plane: [x, y, 0]}
+  centre: {from: contact, leaned: [0, 0, r]}
+bodies:
+  disk: {mass: m, position: centre, frame: disk, inertia: [m*r**2/4, m*r**2/2, m*r**2/4]}
+rolling:
+  - {body: disk, radius: r, axle: [0, 1, 0], on: plane}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: disk}
+"""
+
+
+def test_a_disk_rolling_on_an_incline_against_kane(rng):
+    d = derive(loads(DISK_ON_INCLINE))
+    assert [c.text for c in d.system.constraints] == ["rolling of disk (forward)", "rolling of disk (sideways)"]
+    yaw, lean, spin = q = me.dynamicsymbols("yaw lean spin")
+    u = me.dynamicsymbols("u1:4")
+    m, r, g, alpha = sp.symbols("m r g alpha")
+    N = me.ReferenceFrame("N")
+    P = N.orientnew("P", "Axis", [alpha, N.y])
+    Y = P.orientnew("Y", "Axis", [yaw, P.z])
+    L = Y.orientnew("L", "Axis", [lean, Y.x])
+    R = L.orientnew("R", "Axis", [spin, L.y])
+    C = me.Point("C")
+    C.set_vel(N, 0)                      # the material point at the contact: the incline is at rest
+    D = C.locatenew("D", r * L.z)
+    D.v2pt_theory(C, N, R)
+    disk = me.RigidBody("disk", D, R, m, (me.inertia(L, m * r**2 / 4, m * r**2 / 2, m * r**2 / 4), D))
+    kane = me.KanesMethod(N, q_ind=list(q), u_ind=list(u), kd_eqs=[qi.diff(T) - ui for qi, ui in zip(q, u)])
+    kane.kanes_equations([disk], [(D, -m * g * N.z)])
+    for _ in range(12):
+        v = {"x": rng.uniform(-1, 1), "y": rng.uniform(-1, 1), "yaw": rng.uniform(-3, 3),
+             "lean": rng.uniform(-1.2, 1.2), "spin": rng.uniform(-3, 3), "m": rng.uniform(0.5, 2),
+             "r": rng.uniform(0.2, 1), "g": 9.81, "alpha": rng.uniform(-1, 1)}
+        rates = rng.uniform(-2, 2, 3)
+        v.update({f"dot({n})": w for n, w in zip(("yaw", "lean", "spin"), rates)})
+        point = {**{qi: v[qi.name] for qi in q}, **dict(zip(u, rates)), m: v["m"], r: v["r"], g: 9.81,
+                 alpha: v["alpha"]}
+        assert close(gacli_accelerations(d, v), kane_accelerations(kane, point))
