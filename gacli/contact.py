@@ -11,9 +11,11 @@ material point at P has the velocity of the surface point there:
 
     dG + (ω dt) × (P − G) = dO + (Ω dt) × (P − O),
 
-O the plane's origin and Ω its angular velocity. The rows are formed in N
-and, for a plane whose normal is not N's z, re-expressed along the plane's
-axes, where the contact geometry has the same simple form as on z = 0.
+O the plane's origin and Ω its angular velocity. For a horizontal plane the
+rows are formed along N's axes, as they always were; for any other they are
+formed along the plane's axes from the motion relative to the plane, where
+the contact geometry has the same simple form as on z = 0 and the plane's
+own motion cancels wherever it can.
 
 :class:`RollingContacts` is a part of the loader's builder (gacli.loading):
 it reads frames, points, bodies and expressions through it.
@@ -33,6 +35,7 @@ from gacli.schema import RollingDecl, did_you_mean
 
 # Rolling rows: along a wheel (frames.in_wheel_heading), or a plane's axes for a sphere.
 _WHEEL_ROWS = ("forward", "sideways", "normal")
+_EXPAND_OPS = 60  # row entries up to this size are expanded so that the offset's terms cancel
 
 
 class RollingContacts:
@@ -86,7 +89,9 @@ class RollingContacts:
         """v_P dt − v_surface dt at the contact, along the plane's axes (N's for a horizontal plane)."""
         # The contact geometry is that of the plane z = 0 in the plane's own axes.
         below = F.contact_point(sp.zeros(3, 1), radius, axle)
-        contact = centre + (plane * below if plane is not None else below)
+        if plane is not None:
+            return F.in_wheel_heading(self._relative_rows(body, frame, surface, plane, centre, below), axle)
+        contact = centre + below
         origin = surface.origin
         spin = sp.Matrix(surface.dcm) * sp.Matrix(surface.omega)
         moving = F.cross_form(spin, contact if origin is None else contact - sp.Matrix(origin))
@@ -95,9 +100,25 @@ class RollingContacts:
         position = sp.Matrix(body.position)
         rows = F.rolling_rows(self._velocity_form(body.position), sp.Matrix(frame.dcm) * sp.Matrix(frame.omega),
                               contact - position, moving)
-        if plane is not None:
-            rows = (plane.T * rows).applyfunc(trig.reduce)
         return F.in_wheel_heading(rows, axle)
+
+    def _relative_rows(self, body: Body, frame: F.Frame, surface: F.Frame, plane: sp.Matrix,
+                       centre: sp.Matrix, below: sp.Matrix) -> sp.Matrix:
+        """The rows along the plane's axes, from the motion relative to the plane.
+
+        v_P − v_surface(P) = (v_G − v_O − Ω × (G − O)) + (ω − Ω) × (P − G), and the
+        bracket is the rate of G's components g along the plane's axes: the rows
+        are dg + ((ω − Ω) dt) × (P − G), all along those axes. Formed so, they hold
+        no products of the plane's turning with itself that sin² + cos² must undo.
+        """
+        def along(vector):
+            return (plane.T * vector).applyfunc(trig.reduce)
+
+        origin = sp.Matrix(surface.origin) if surface.origin is not None else sp.zeros(3, 1)
+        g = along(sp.Matrix(body.position) - origin)
+        spin = along(sp.Matrix(frame.dcm) * sp.Matrix(frame.omega)) - sp.Matrix(surface.omega)
+        rows = self._velocity_form(tuple(g)) + F.cross_form(spin, along(centre - sp.Matrix(body.position)) + below)
+        return rows.applyfunc(_cancelled)
 
     def _axle(self, decl: RollingDecl, frame: F.Frame, plane: sp.Matrix | None, where: str):
         """The unit axle along the plane's axes (N's for a horizontal plane); False on error."""
@@ -161,6 +182,14 @@ def plane_axes(surface: F.Frame) -> sp.Matrix | None:
     dcm = sp.Matrix(surface.dcm)
     normal = [trig.reduce(e) for e in dcm[:, 2]]
     return None if normal == [0, 0, 1] else dcm
+
+
+def _cancelled(entry: sp.Expr) -> sp.Expr:
+    """A row entry with the offset's terms cancelled ((e cos θ − r) sin φ − e sin φ cos θ = −r sin φ):
+    expanded when small, then reduced by sin² + cos² = 1."""
+    if sp.count_ops(entry) <= _EXPAND_OPS:
+        entry = sp.expand(entry)
+    return trig.reduce(entry)
 
 
 def _axis_names(surface: F.Frame, plane: sp.Matrix | None) -> tuple[str, str, str]:
