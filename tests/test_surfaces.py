@@ -276,3 +276,18 @@ def test_a_disk_rolling_on_an_incline_against_kane(rng):
         point = {**{qi: v[qi.name] for qi in q}, **dict(zip(u, rates)), m: v["m"], r: v["r"], g: 9.81,
                  alpha: v["alpha"]}
         assert close(gacli_accelerations(d, v), kane_accelerations(kane, point))
+
+
+def test_a_child_frame_without_an_origin_has_its_parents(rng):
+    # Rolling on a frame turned about the plane's normal, declared without an origin, is
+    # rolling on the same moving plane: the same motion, rows along other axes.
+    from conftest import SYSTEMS
+
+    text = (SYSTEMS / "sphere_on_tilted_plane.yaml").read_text(encoding="utf-8")
+    turned = text.replace("  ball: {parent: plane,", "  turned: {parent: plane, rotations: [[z, 0.4]]}\n"
+                          "  ball: {parent: plane,").replace("on: plane}", "on: turned}")
+    assert turned.count("turned") == 2
+    d, e = derived("sphere_on_tilted_plane"), derive(loads(turned))
+    for _ in range(5):
+        v = random_state(rng, alpha=rng.uniform(-1, 1), A=rng.uniform(0, 0.5), w=rng.uniform(1, 8))
+        assert close(gacli_accelerations(e, v), gacli_accelerations(d, v))
