@@ -117,7 +117,8 @@ def _definitions() -> dict:
         "frame": _frame(),
         "body": _body(),
         "rolling": _closed({"body": _ref("name"), "radius": _ref("expression"), "axle": _vector((3,)),
-                            "on": _ref("name"), "description": _text()}, ("body", "radius")),
+                            "centre": _vector((3,)), "on": _ref("name"), "description": _text()},
+                           ("body", "radius")),
         "load": _load(),
     }
 
@@ -127,12 +128,16 @@ def _frame() -> dict:
             "minItems": 2, "description": "[axis, angle], as [z, psi]"}
     properties = {
         "parent": _ref("name"),
+        "origin": _either(_ref("name"), _vector((3,)), description="a point's name, or a position"),
         "rotations": {"type": "array", "items": pair, "minItems": 1},
         "sequence": {"type": "string", "pattern": "^[XYZxyz]{1,3}$", "description": "as ZXZ"},
         "angles": _list((1, 2, 3)),
         "description": _text(),
     }
-    return _closed(properties, oneOf=[{"required": ["rotations"]}, {"required": ["sequence", "angles"]}])
+    # Rotations, or a sequence with angles, or neither with an origin (the parent's axes, moved).
+    neither = {"not": {"anyOf": [{"required": ["rotations"]}, {"required": ["sequence"]}]},
+               "required": ["origin"]}
+    return _closed(properties, oneOf=[{"required": ["rotations"]}, {"required": ["sequence", "angles"]}, neither])
 
 
 def _body() -> dict:

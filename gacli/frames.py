@@ -44,11 +44,13 @@ def unit(axis: str) -> sp.Matrix:
 
 @dataclass(frozen=True)
 class Frame:
-    """A frame's direction cosines (frame → N) and ω dt in its own axes, as a form vector."""
+    """A frame's direction cosines (frame → N), ω dt in its own axes (a form vector), and the
+    N components of its origin (None: N's origin, where a frame without one turns)."""
 
     name: str
     dcm: sp.ImmutableMatrix
     omega: sp.ImmutableMatrix
+    origin: tuple[sp.Expr, ...] | None = None
 
 
 def inertial_frame(width: int) -> Frame:

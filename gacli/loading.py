@@ -16,6 +16,7 @@ import sympy as sp
 
 from gacli import frames as F
 from gacli import nonlinear as NL
+from gacli.contact import RollingContacts
 from gacli import symbols as S
 from gacli import trig
 from gacli.errors import Diagnostic, Location, SystemFileError
@@ -25,7 +26,6 @@ from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.imaginary import imaginary_problem
 from gacli.numeric import Program
-from gacli.rolling_geometry import axle_problem, radius_problem
 from gacli.model import (
     Body,
     Constraint,
@@ -43,7 +43,6 @@ from gacli.schema import (
     BodyDecl,
     FrameDecl,
     LoadDecl,
-    RollingDecl,
     SymbolDecl,
     SystemDecl,
     VectorDecl,
@@ -88,7 +87,7 @@ def load_source(source: SourceFile) -> System:
 
 
 @dataclass
-class _Builder:
+class _Builder(RollingContacts):
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
@@ -138,6 +137,7 @@ class _Builder:
         self.frames = self._frames()
         self._failed_points: set[str] = set()
         self.points = self._points()
+        self._frame_origins()
         bodies = tuple(b for b in (self._body(b) for b in self.decl.bodies) if b)
         self.body_frames = {b.name: b.frame for b in self.decl.bodies if b.frame is not None}
         forces, torques = self._loads(bodies)
@@ -370,8 +370,12 @@ class _Builder:
             return None
         if node.text in self._point_decls:  # declared later: resolved now; its own errors are reported there
             return self._resolve_point(self._point_decls[node.text])
-        choices = set(self.points) | {b.name for b in self.decl.bodies}
-        self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, choices))
+        bodies = {b.name for b in self.decl.bodies}
+        if node.text in bodies:  # its name is not its centre's: say so rather than suggest itself
+            self.error(node, where, f"'{node.text}' is a body, not a point",
+                       "declare a point under 'points' and give it as the body's position")
+            return None
+        self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, set(self.points) | bodies))
         return None
 
     # -- frames and points -------------------------------------------------
@@ -568,66 +572,6 @@ class _Builder:
         row = sp.Matrix([along]) * self._velocity_form(point)
         return Constraint(self._row_form(row), self.where_of(decl.node), f"velocity of {decl.point.text} along {list(along)}")
 
-    def _rolling_constraints(self, bodies: tuple[Body, ...]) -> tuple[Constraint, ...]:
-        by_name = {b.name: b for b in bodies}
-        out: list[Constraint] = []
-        for decl in self.decl.rolling:
-            out += self._rolling(decl, by_name)
-        return tuple(out)
-
-    def _rolling(self, decl: RollingDecl, bodies: dict[str, Body]) -> list[Constraint]:
-        """The material point at the contact has the surface's velocity: up to three rows."""
-        where = f"rolling[{decl.index}]"
-        body = self._body_named(decl.body, f"{where}.body", bodies)
-        radius = self.expression(decl.radius, f"{where}.radius", self.scopes.constant)
-        frame = self._rolling_frame(decl, body, where) if body is not None else None
-        surface = self._surface(decl, where)
-        if radius is not None and (problem := radius_problem(radius, self.known)):
-            self.error(decl.radius, f"{where}.radius", problem)
-            return []
-        if body is None or radius is None or frame is None or surface is None:
-            return []
-        dcm = sp.Matrix(frame.dcm)
-        axle = None
-        if decl.axle is not None:
-            local = self._vector(decl.axle.components, f"{where}.axle", self.scopes.constant) if decl.axle.components else None
-            if local is None:
-                self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
-                return []
-            local = sp.Matrix(local)
-            if problem := axle_problem(local, dcm, self.known):  # else the contact divides by zero: rows lost
-                self.error(decl.axle.node, f"{where}.axle", problem)
-                return []
-            axle = dcm * (local / sp.sqrt(local.dot(local)))
-        centre = sp.Matrix(body.position)
-        contact = F.contact_point(centre, radius, axle)
-        rows = F.rolling_rows(self._velocity_form(body.position), dcm * sp.Matrix(frame.omega), contact - centre,
-                              F.cross_form(sp.Matrix(surface.dcm) * sp.Matrix(surface.omega), contact))
-        rows = F.in_wheel_heading(rows, axle)
-        return [Constraint(self._row_form(rows[i, :]), self.where_of(decl.node),
-                           f"rolling of {body.name} ({_ROW_NAMES[axle is None][i]})", derived=True)
-                for i in range(3) if not _vanishes(rows[i, :])]
-
-    def _rolling_frame(self, decl: RollingDecl, body: Body, where: str) -> F.Frame | None:
-        if body.is_rigid and body.name in self.body_frames:
-            return self.frames.get(self.body_frames[body.name].text)
-        if body.is_rigid and decl.axle is None:
-            # A sphere given by format-1 forms: its rotation components are taken as inertial ones.
-            omega = sp.Matrix.vstack(*(self._form_row(f) for f in body.rotation))
-            return F.Frame(body.name, sp.ImmutableMatrix(sp.eye(3)), sp.ImmutableMatrix(omega))
-        self.error(decl.body, f"{where}.body", f"'{body.name}' needs a 'frame' to roll with an axle")
-        return None
-
-    def _form_row(self, form: Form) -> sp.Matrix:
-        return sp.Matrix([[form.coefficient(n) for n in self.scopes.rate_names] + [form.dt]])
-
-    def _surface(self, decl: RollingDecl, where: str) -> F.Frame | None:
-        name = decl.on.text if decl.on is not None else F.INERTIAL
-        if name not in self.frames:
-            self.error(decl.on, f"{where}.on", f"'{name}' is not a frame", did_you_mean(name, self.frames))
-            return None
-        return self.frames[name]
-
     def _independent(self) -> tuple[str, ...] | None:
         if self.decl.independent is None:
             return None
@@ -643,15 +587,6 @@ class _Builder:
             else:
                 names.append(node.text)
         return tuple(names)
-
-
-# Rolling rows: along a wheel (frames.in_wheel_heading), or N's axes for a sphere.
-_ROW_NAMES = {False: ("forward", "sideways", "normal"), True: ("x", "y", "z")}
-
-
-def _vanishes(row: sp.Matrix) -> bool:
-    """Every entry identically zero (a rolling row that geometry already satisfies)."""
-    return all(_is_zero(e, simplify=False) for e in row)
 
 
 def _section(kind: str) -> str:

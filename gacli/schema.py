@@ -31,8 +31,8 @@ SYMBOL_KEYS = ("description", "value", "unit", "latex")
 QUASI_KEYS = ("description", "differential", "unit", "latex")
 BODY_KEYS = ("mass", "position", "inertia", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "description")
-FRAME_KEYS = ("parent", "rotations", "sequence", "angles", "description")
-ROLLING_KEYS = ("body", "radius", "axle", "on", "description")
+FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "description")
+ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
 VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "description")
 AXIS_NAMES = ("x", "y", "z")
 SYMBOL_SECTIONS = ("parameters", "functions", "inputs", "coordinates", "quasi_coordinates")
@@ -67,12 +67,14 @@ class VectorDecl:
 
 @dataclass(frozen=True)
 class FrameDecl:
-    """A frame turned from ``parent`` by successive rotations (axis, angle) about its own axes."""
+    """A frame turned from ``parent`` by successive rotations (axis, angle) about its own axes,
+    with its origin at a point (``origin``), or at its parent's origin when none is given."""
 
     name: str
     node: Scalar
     parent: Scalar | None
     rotations: tuple[tuple[Scalar, Scalar], ...]
+    origin: VectorDecl | None = None
 
 
 @dataclass(frozen=True)
@@ -113,7 +115,8 @@ class LoadDecl:
 
 @dataclass(frozen=True)
 class RollingDecl:
-    """A body rolling without slipping on the plane z = 0 (fixed, or turning with frame ``on``)."""
+    """A body rolling without slipping on the plane z = 0 of frame ``on`` (N when absent),
+    its geometric centre at ``centre`` from its centre of mass (at it when absent)."""
 
     index: int
     node: Node
@@ -121,6 +124,7 @@ class RollingDecl:
     radius: Scalar
     axle: VectorDecl | None = None
     on: Scalar | None = None
+    centre: VectorDecl | None = None
 
 
 @dataclass(frozen=True)
@@ -589,11 +593,16 @@ def _frame(reader: _Reader, key: Scalar, node: Node) -> FrameDecl | None:
     parent = fields["parent"][1] if "parent" in fields else None
     if parent is not None and not reader.name(parent, f"{where}.parent"):
         return None
-    if ("rotations" in fields) == ("sequence" in fields):
-        reader.error(node, where, "a frame needs either 'rotations' ([[axis, angle], ...]) or 'sequence' and 'angles'")
+    origin = reader.vector(fields["origin"][1], f"{where}.origin", (3,), point=True) if "origin" in fields else None
+    if "origin" in fields and origin is None:
         return None
-    rotations = _rotations(reader, fields, where)
-    return FrameDecl(key.text, key, parent, rotations) if rotations is not None else None
+    if ("rotations" in fields) == ("sequence" in fields) and not (origin and "rotations" not in fields):
+        reader.error(node, where, "a frame needs either 'rotations' ([[axis, angle], ...]) or 'sequence' and "
+                     "'angles' (or only an 'origin': its parent's axes, moved)")
+        return None
+    # A frame with only an origin keeps its parent's axes: the plane of a translating surface.
+    rotations = _rotations(reader, fields, where) if "rotations" in fields or "sequence" in fields else ()
+    return FrameDecl(key.text, key, parent, rotations, origin) if rotations is not None else None
 
 
 def _rotations(reader: _Reader, fields: dict, where: str):
@@ -679,7 +688,8 @@ def _rolling(reader: _Reader, top: dict) -> tuple[RollingDecl, ...]:
         radius = reader.expression(fields["radius"][1], f"{where}.radius")
         axle = reader.vector(fields["axle"][1], f"{where}.axle", (3,)) if "axle" in fields else None
         on = fields["on"][1] if "on" in fields else None
+        centre = reader.vector(fields["centre"][1], f"{where}.centre", (3,)) if "centre" in fields else None
         if reader.name(body, f"{where}.body") and radius and ("axle" not in fields or axle) \
-                and (on is None or reader.name(on, f"{where}.on")):
-            out.append(RollingDecl(i, item, body, radius, axle, on))
+                and (on is None or reader.name(on, f"{where}.on")) and ("centre" not in fields or centre):
+            out.append(RollingDecl(i, item, body, radius, axle, on, centre))
     return tuple(out)

@@ -33,6 +33,9 @@ from gacli.texsafe import is_printable_name
 
 # Rough printed width (in characters of typeset maths) before a sum is broken.
 LINE_WIDTH = 44
+# A single term wider than this is written expanded, term by term (a line cannot break inside it).
+WIDE = LINE_WIDTH + 8
+_LABEL = 4  # the room a label ∂G/∂ü takes from the lines of an equation, beyond that of G
 # Characters of free text (a title, a source) on one line of the .tex file.
 TEXT_LINE = 240
 
@@ -309,9 +312,21 @@ def _gibbs_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[str]
     k = len(a)
     terms = [t for i in range(k) if (t := _half_term(tidy(H[i, i]), a[i] ** 2, printer))]
     pairs = [(H[i, j], a[i] * a[j]) for i in range(k) for j in range(i + 1, k)] + list(zip(g, a))
-    terms += [t for c, m in pairs if (t := _product_term(tidy(c), m, printer))]
+    for c, m in pairs:
+        terms += _breakable_product(tidy(c), m, printer)
     terms.append((False, r"\dots"))
     return _sum_rows("G", terms)
+
+
+def _breakable_product(coefficient: sp.Expr, monomial: sp.Expr, printer: GacliLatexPrinter) -> list[Term]:
+    """coefficient · monomial as one term, or, when that is wider than a line (an unequal-moment
+    ball's g_i), term by term of the expanded coefficient, each times the monomial, so that lines
+    can break."""
+    term = _product_term(coefficient, monomial, printer)
+    if term is None or _width(term[1]) <= WIDE or not (spread := sp.expand(coefficient)).is_Add:
+        return [term] if term else []
+    parts = printer._as_ordered_terms(spread, order=None)
+    return [t for part in parts if (t := _product_term(part, monomial, printer))]
 
 
 def _force_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
@@ -328,7 +343,7 @@ def _equation_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[l
     groups = []
     for s, u in enumerate(a):
         terms = [t for r in range(len(a)) if (t := _product_term(tidy(M[s, r]), a[r], printer))]
-        terms += _terms(tidy(Q[s] - F[s]), printer)
+        terms += _terms(tidy(Q[s] - F[s]), printer, WIDE - _LABEL)
         label = rf"\frac{{\partial G}}{{\partial {printer.doprint(u)}}}"
         groups.append(_sum_rows(label, terms or _ZERO, _terms(tidy(Q[s]), printer) or _ZERO))
     return groups
@@ -359,15 +374,21 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     return Tidy(budget=sys.maxsize)(expr)
 
 
-def _terms(expr: sp.Expr, printer: GacliLatexPrinter) -> list[Term]:
-    """The terms of a sum in the printer's order, each with its sign pulled out; [] for 0."""
+def _terms(expr: sp.Expr, printer: GacliLatexPrinter, wide: int = WIDE) -> list[Term]:
+    """The terms of a sum in the printer's order, each with its sign pulled out; [] for 0.
+    A term wider than ``wide`` is written expanded."""
     if expr == 0:
         return []
     terms = printer._as_ordered_terms(expr, order=None) if expr.is_Add else [expr]
     out = []
     for term in terms:
         negative = term.could_extract_minus_sign()
-        out.append((negative, printer._print(-term if negative else term)))
+        tex = printer._print(-term if negative else term)
+        if _width(tex) > wide and (spread := sp.expand(term)).is_Add:
+            # A factored term wider than a line cannot break; its expansion can.
+            out += _terms(spread, printer, wide)
+        else:
+            out.append((negative, tex))
     return out
 
 
