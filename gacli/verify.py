@@ -455,10 +455,15 @@ class VerifyReport:
         for key, title in self.GROUPS:
             for d in getattr(self, key):
                 if not d.passed and not d.undetermined:
-                    out.append(f"{d.equation}: relative difference {d.max_relative:.3g} > {self.tol:g} ({title})")
+                    # inf: not evaluated at some sample (the notes say why), not a measured difference
+                    found = ("could not be evaluated at some samples" if d.max_relative == math.inf
+                             else f"relative difference {d.max_relative:.3g} > {self.tol:g}")
+                    out.append(f"{d.equation}: {found} ({title})")
         if not self.mass_symmetric:
             out.append(f"M is not symmetric: relative asymmetry {self.mass_asymmetry:.3g}")
-        if not self.mass_positive_definite:
+        if self.mass_min_eigenvalue == math.inf and not self.unphysical:
+            out.append("M could not be evaluated at any sample (see the notes)")
+        elif not self.mass_positive_definite:
             out.append(f"M is not positive definite: smallest eigenvalue / largest = {self.mass_min_eigenvalue:.3g}")
         for name in self.undetermined:
             out.append(f"{S.rate_name(name, 2)}: the fundamental equation leaves it undetermined "
@@ -645,8 +650,12 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
 
             try:
                 th = theirs(values)
+                if not all(mpmath.isfinite(e) for e in (*th["M"], *th["F"])):
+                    # A number in the file overflows (exp(exp(exp(100)))): nothing can be compared.
+                    raise ArithmeticError("M or F is infinite or not a number there")
             except (ZeroDivisionError, ArithmeticError) as exc:
-                notes.append(f"the derivation could not be evaluated at some samples ({exc})")
+                note = f"the derivation could not be evaluated at some samples ({exc})"
+                notes.extend([note] if note not in notes else [])
                 for w in (worst_acc, worst_kin, worst_rates, worst_gibbs):
                     w.fail_all()
                 continue

@@ -415,3 +415,18 @@ def test_numeric_program_matches_sympy():
     compiled = V._Compiled({"e": sp.Matrix([sp.Piecewise((x, x > 0), (0, True))])})
     with mpmath.workdps(30):
         assert compiled(values)["e"][0] == mpmath.mpf("0.7")
+
+
+def test_a_derivation_that_cannot_be_evaluated_is_said_so_not_measured(tmp_path):
+    # exp(exp(exp(100))) overflows every sample: there is no difference to report, only that.
+    from typer.testing import CliRunner
+
+    from gacli.cli import app
+
+    path = tmp_path / "overflow.yaml"
+    path.write_text("gacli: 1\nname: ee\nparameters: {m: {value: 1}}\ncoordinates: [x]\n"
+                    "bodies:\n  b: {mass: m, position: [x, 0]}\npotential: exp(exp(exp(100)))*x\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["verify", "--samples", "2", str(path)])
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    assert "could not be evaluated" in result.output
+    assert "relative difference inf" not in result.output and "= inf" not in result.output
