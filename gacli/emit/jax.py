@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from string import Template
 
 from gacli.emit.assembly import Assembly, assemble
-from gacli.emit.naming import Layout, header_lines, layout
+from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import GacliJaxPrinter
 from gacli.emit.python import python_dict as _dict, python_tuple as _tuple
 from gacli.equations import Derivation
@@ -37,7 +37,7 @@ MODULE = Template('''\
 $header
 """Equations of motion of $name, derived by the Gibbs-Appell method, in JAX.
 
-    M(q, t) u' = F(q, u, t)    with k = $k independent rates u
+    $mass u' = F(q, u, t)    with k = $k independent rates u
     q' = beta u + beta0        the kinematic equations
 
 x = STATE is (q, u); p = PARAMETERS; r = INPUTS, given as a sequence or as
@@ -86,7 +86,7 @@ def emit_jax(derivation: Derivation, *, reactions: bool = False) -> dict[str, st
     functions = [_mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay)]
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "jax")),
-        name=lay.system, k=lay.k, state=_tuple(lay.state), parameters=_tuple(lay.parameters),
+        name=lay.system, k=lay.k, mass=mass_arguments(derivation), state=_tuple(lay.state), parameters=_tuple(lay.parameters),
         inputs=_tuple(lay.r), defaults=_dict(lay.defaults), functions="".join(functions),
     )
     return {f"{lay.system}_jax.py": text}

@@ -354,6 +354,13 @@ def _name_entries(groups: Mapping[str, list], prefix: str, reserved: ReservedNam
 
 # -- provenance -----------------------------------------------------------------
 
+def mass_arguments(derivation: Derivation) -> str:
+    """How a module's docstring writes M: M(q, u, t) when a constraint nonlinear in the rates puts u in it."""
+    speeds = set(derivation.speeds)
+    moving = any(e.free_symbols & speeds for e in derivation.mass_matrix.todok().values())
+    return "M(q, u, t)" if moving else "M(q, t)"
+
+
 def header_lines(derivation: Derivation, fmt: str) -> list[str]:
     """The first lines of every generated file, without comment markers.
 

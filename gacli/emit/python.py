@@ -27,7 +27,7 @@ from string import Template
 import sympy as sp
 
 from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
-from gacli.emit.naming import Layout, header_lines, layout
+from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.equations import Derivation
 
@@ -37,7 +37,7 @@ MODULE = Template('''\
 $header
 """Equations of motion of $name, derived by the Gibbs-Appell method.
 
-    M(q, t) u' = F(q, u, t)    with k = $k independent rates u
+    $mass u' = F(q, u, t)    with k = $k independent rates u
     q' = beta u + beta0        the kinematic equations
 
 x = STATE is (q, u); p = PARAMETERS; r = INPUTS, given as a sequence or as
@@ -122,7 +122,7 @@ def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str,
         functions.insert(3, _reactions(derivation, lay))
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
-        name=lay.system, k=lay.k, imports="import math\n\nimport numpy",
+        name=lay.system, k=lay.k, mass=mass_arguments(derivation), imports="import math\n\nimport numpy",
         state=python_tuple(lay.state), parameters=python_tuple(lay.parameters), inputs=python_tuple(lay.r),
         defaults=python_dict(lay.defaults), functions="".join(functions),
     )
