@@ -291,3 +291,88 @@ def test_a_child_frame_without_an_origin_has_its_parents(rng):
     for _ in range(5):
         v = random_state(rng, alpha=rng.uniform(-1, 1), A=rng.uniform(0, 0.5), w=rng.uniform(1, 8))
         assert close(gacli_accelerations(e, v), gacli_accelerations(d, v))
+
+
+# -- a wheel on a tilted, shaken plane -----------------------------------------------------------
+# The same wheel twice: on a plane tilted by alpha and shaken along its own x axis
+# (the path for a plane whose normal is not N's z), and on a level plane shaken the
+# same way under gravity tilted by alpha (the level path, with a moving origin).
+# A constant tilt of the whole scene changes nothing, so M, F and the kinematic
+# equations in the same coordinates must be equal.
+
+WHEEL_ON_INCLINE = """\
+gacli: 1
+name: disk_on_shaken_incline
+parameters:
+  m: {value: 2}
+  r: {value: 0.3}
+  g: {value: 9.81}
+  alpha: {value: 0.3}
+  A: {value: 0.05}
+  w: {value: 6}
+functions:
+  s: {value: "A*sin(w*t)"}
+coordinates: [x, y, yaw, lean, spin]
+independent: [yaw, lean, spin]
+frames:
+  tilted: {rotations: [[y, alpha]]}
+  plane: {parent: tilted, origin: slide}
+  heading: {parent: plane, rotations: [[z, yaw]]}
+  leaned: {parent: heading, rotations: [[x, lean]]}
+  disk: {parent: leaned, rotations: [[y, spin]]}
+points:
+  slide: {tilted: [s, 0, 0]}
+  contact: {from: slide, plane: [x, y, 0]}
+  centre: {from: contact, leaned: [0, 0, r]}
+bodies:
+  disk: {mass: m, position: centre, frame: disk, inertia: [m*r**2/4, m*r**2/2, m*r**2/4]}
+rolling:
+  - {body: disk, radius: r, axle: [0, 1, 0], on: plane}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: disk}"""
+
+WHEEL_UNDER_TILTED_GRAVITY = """\
+gacli: 1
+name: disk_on_shaken_plane_tilted_gravity
+parameters:
+  m: {value: 2}
+  r: {value: 0.3}
+  g: {value: 9.81}
+  alpha: {value: 0.3}
+  A: {value: 0.05}
+  w: {value: 6}
+functions:
+  s: {value: "A*sin(w*t)"}
+coordinates: [x, y, yaw, lean, spin]
+independent: [yaw, lean, spin]
+frames:
+  plane: {origin: slide}
+  heading: {parent: plane, rotations: [[z, yaw]]}
+  leaned: {parent: heading, rotations: [[x, lean]]}
+  disk: {parent: leaned, rotations: [[y, spin]]}
+points:
+  slide: {N: [s, 0, 0]}
+  contact: {from: slide, plane: [x, y, 0]}
+  centre: {from: contact, leaned: [0, 0, r]}
+bodies:
+  disk: {mass: m, position: centre, frame: disk, inertia: [m*r**2/4, m*r**2/2, m*r**2/4]}
+rolling:
+  - {body: disk, radius: r, axle: [0, 1, 0], on: plane}
+loads:
+  - {force: {N: [m*g*sin(alpha), 0, -m*g*cos(alpha)]}, at: disk}"""
+
+
+def test_a_wheel_on_a_tilted_shaken_plane_is_the_level_wheel_under_tilted_gravity(rng):
+    tilted, level = derive(loads(WHEEL_ON_INCLINE)), derive(loads(WHEEL_UNDER_TILTED_GRAVITY))
+    exprs = [*tilted.mass_matrix, *tilted.forcing, *level.mass_matrix, *level.forcing,
+             *(e for _, e in tilted.kinematic_equations), *(e for _, e in level.kinematic_equations)]
+    symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda s: s.name)
+    assert any(s.name == "alpha" for s in symbols)
+    for _ in range(4):
+        values = {s: sp.Float(rng.uniform(0.2, 1.1), 30) for s in symbols}
+        for a, b in [(tilted.mass_matrix, level.mass_matrix), (tilted.forcing, level.forcing),
+                     (sp.Matrix([e for _, e in tilted.kinematic_equations]),
+                      sp.Matrix([e for _, e in level.kinematic_equations]))]:
+            A = np.array(a.xreplace(values).evalf(), dtype=float)
+            B = np.array(b.xreplace(values).evalf(), dtype=float)
+            assert np.max(np.abs(A - B)) <= 1e-12 * max(1.0, np.max(np.abs(B)))
