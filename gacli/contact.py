@@ -32,6 +32,7 @@ from gacli import trig
 from gacli.model import Body, Constraint, Form
 from gacli.rolling_geometry import axle_problem, radius_problem
 from gacli.schema import RollingDecl, did_you_mean
+from gacli.zero import vanishes
 
 # Rolling rows: along a wheel (frames.in_wheel_heading), or a plane's axes for a sphere.
 _WHEEL_ROWS = ("forward", "sideways", "normal")
@@ -200,6 +201,4 @@ def _axis_names(surface: F.Frame, plane: sp.Matrix | None) -> tuple[str, str, st
 
 def _vanishes(row: sp.Matrix) -> bool:
     """Every entry identically zero (a rolling row that geometry already satisfies)."""
-    from gacli.loading import _is_zero  # the loader's zero test; imported late, it imports this module
-
-    return all(_is_zero(e, simplify=False) for e in row)
+    return all(vanishes(e, simplify=False) for e in row)

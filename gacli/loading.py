@@ -25,6 +25,7 @@ from gacli.expr.grammar import FUNCTIONS, ParseError, parse
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.imaginary import imaginary_problem
+from gacli.zero import vanishes
 from gacli.numeric import Program
 from gacli.model import (
     Body,
@@ -622,37 +623,9 @@ def _linearity_problem(expr: sp.Expr, partials: dict[sp.Symbol, sp.Expr]) -> str
         if partials[d].free_symbols & present:
             return f"the form is not linear in the differentials: {_offending_term(expr, present)}"
     rest = expr.xreplace({d: 0 for d in present})
-    if not _is_zero(rest):
+    if not vanishes(rest):
         return f"every term of a differential form needs a differential; '{_plain(rest)}' has none"
     return ""
-
-
-def _is_zero(expr: sp.Expr, simplify: bool = True) -> bool:
-    """Zero exactly when cheap to see, else at generic points (never hangs on a huge tree).
-
-    Without ``simplify`` a small expression is only expanded before the
-    numeric test: cheaper, for the many rows of a rolling contact.
-    """
-    if expr == 0:
-        return True
-    if is_small(expr, 200):
-        try:
-            if sp.expand(expr) == 0:
-                return True
-            if simplify:
-                return sp.simplify(expr) == 0
-        except (ArithmeticError, ValueError, TypeError, RecursionError):
-            return False
-    from gacli.kinematics import random_point
-
-    for seed in (1, 2, 3):
-        try:
-            value = complex(expr.xreplace(random_point(expr.free_symbols, seed)).evalf(20))
-        except (ArithmeticError, ValueError, TypeError):
-            return False
-        if abs(value) > 1e-12:
-            return False
-    return True
 
 
 def _offending_term(expr: sp.Expr, present: set) -> str:
