@@ -26,6 +26,7 @@ from string import Template
 from gacli.emit.assembly import Assembly, assemble
 from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import GacliJaxPrinter
+from gacli.emit.python import FUNCTION  # the same def line and docstring as the NumPy module
 from gacli.emit.python import python_dict as _dict, python_tuple as _tuple
 from gacli.equations import Derivation
 from gacli.errors import EmitError
@@ -59,13 +60,6 @@ PARAMETERS = $parameters
 INPUTS = $inputs
 DEFAULTS = $defaults
 $functions''')
-
-FUNCTION = Template('''
-
-def $name(t, x, p, r=()):
-    """$doc"""
-$body
-''')
 
 DOCS = {
     "mass_matrix": "The mass matrix M, shape ({k}, {k}), symmetric positive definite.",
