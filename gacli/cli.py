@@ -14,7 +14,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from gacli import __version__
+from gacli.version import __version__
 from gacli.cli_help import Group, choice, derive_usage, example, formats
 
 app = typer.Typer(

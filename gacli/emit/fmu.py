@@ -60,7 +60,7 @@ def emit_fmu(derivation: Derivation, *, binary: bool = True,
         EmitError: when an expression has no C rendering, or the compiler
             fails (or ``$CC`` names no program).
     """
-    from gacli import __version__
+    from gacli.version import __version__
 
     lay = layout(derivation)
     sources = emit_c(derivation)
