@@ -1,18 +1,12 @@
-"""The one call that turns a derivation into generated files."""
+"""The Python API behind ``gacli.emit``: the one call that turns a derivation into generated files.
+
+The dispatch over formats is :func:`gacli.emit.emit`, beside the emitters it
+chooses from; this layer above them only names it, so that nothing in
+:mod:`gacli.emit` reaches back up here.
+"""
 
 from __future__ import annotations
 
-from gacli.equations import Derivation
-from gacli.errors import EmitError
+from gacli.emit import emit
 
-
-def emit(derivation: Derivation, format: str, **options) -> dict[str, str]:
-    """Generated files for ``format`` (a key of :data:`gacli.emit.EMITTERS`), as {file name: text}."""
-    from gacli.emit import EMITTERS
-
-    try:
-        emitter = EMITTERS[format]
-    except KeyError:
-        # Worded as the command line words it (gacli.cli_help.choice).
-        raise EmitError(f"'{format}' is not a format; choose one of: {', '.join(sorted(EMITTERS))}") from None
-    return emitter(derivation, **options)
+__all__ = ["emit"]

@@ -16,6 +16,8 @@ import types
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from gacli.errors import EmitError
+
 if TYPE_CHECKING:
     from gacli.equations import Derivation
 
@@ -73,11 +75,22 @@ EMITTERS: dict[str, Emitter] = {
     "jax": emit_jax,
 }
 
-__all__ = ["EMITTERS", "Emitter", "emit_c", "emit_fmu", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
+
+def emit(derivation: Derivation, format: str, **options) -> dict[str, str]:
+    """Generated files for ``format`` (a key of :data:`EMITTERS`), as {file name: text}."""
+    try:
+        emitter = EMITTERS[format]
+    except KeyError:
+        # Worded as the command line words it (gacli.cli_help.choice).
+        raise EmitError(f"'{format}' is not a format; choose one of: {', '.join(sorted(EMITTERS))}") from None
+    return emitter(derivation, **options)
+
+
+__all__ = ["EMITTERS", "Emitter", "emit", "emit_c", "emit_fmu", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
 
 
 class _CallablePackage(types.ModuleType):
-    """This package, callable as :func:`gacli.api.emit`.
+    """This package, callable as :func:`emit`.
 
     ``gacli.emit(derivation, "c")`` is the documented API, and importing this
     package binds the name ``emit`` on ``gacli`` to the package (Python sets
@@ -85,8 +98,6 @@ class _CallablePackage(types.ModuleType):
     """
 
     def __call__(self, derivation: Derivation, format: str, **options) -> dict[str, str]:
-        from gacli.api import emit
-
         return emit(derivation, format, **options)
 
 
