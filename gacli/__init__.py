@@ -33,8 +33,8 @@ __all__ = [
 ]
 
 _LAZY = {
-    "Derivation": "gacli.equations",
-    "derive": "gacli.equations",
+    "Derivation": "gacli.api",
+    "derive": "gacli.api",
     "System": "gacli.model",
     "load": "gacli.loading",
     "loads": "gacli.loading",
@@ -48,8 +48,7 @@ _LAZY = {
 }
 
 if TYPE_CHECKING:  # pragma: no cover
-    from gacli.api import emit
-    from gacli.equations import Derivation, derive
+    from gacli.api import Derivation, derive, emit
     from gacli.errors import (
         DerivationError,
         Diagnostic,

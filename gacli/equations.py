@@ -50,15 +50,11 @@ class Derivation:
     kinematic_equations: tuple[tuple[str, sp.Expr], ...]
 
     def __repr__(self) -> str:
-        from gacli.notebook import derivation_repr
-
-        return derivation_repr(self)
-
-    def _repr_latex_(self) -> str:
-        """Jupyter: the equations as ``gacli derive --format latex`` prints them (a summary when large)."""
-        from gacli.notebook import derivation_latex
-
-        return derivation_latex(self)
+        # One line: the dataclass repr would print every matrix. The notebook's typeset face
+        # (_repr_latex_) is given by gacli.notebook, which this stage must not import.
+        s, k = self.system, self.k
+        return (f"<Derivation of {s.name!r}: k = {k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
+                f"speeds {', '.join(str(u) for u in self.speeds)}; M {k}x{k}, F {k}x1>")
 
     @functools.cached_property
     def gibbs(self) -> sp.Expr:

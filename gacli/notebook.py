@@ -1,4 +1,4 @@
-"""How a derivation shows itself in a notebook and at the prompt.
+"""How a derivation shows itself in a notebook (its one-line repr is its own).
 
 Jupyter shows ``_repr_latex_`` through MathJax: text as text, ``$...$`` and
 ``align*`` as mathematics. The equations are those of ``gacli derive
@@ -11,10 +11,7 @@ bicycle's equations would take minutes to print and pages to scroll.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
-if TYPE_CHECKING:  # pragma: no cover
-    from gacli.equations import Derivation
+from gacli.equations import Derivation
 
 # Tree nodes of M and F together, above which a notebook shows a summary.
 # The shipped systems other than the bicycle stay under 2,000; a page of
@@ -36,7 +33,7 @@ def readable_size(d: Derivation, limit: int = REPR_NODES) -> bool:
 
 
 def derivation_latex(d: Derivation) -> str:
-    """The equations as ``gacli derive --format latex`` prints them, or a summary when too large."""
+    """Jupyter: the equations as ``gacli derive --format latex`` prints them, or a summary when too large."""
     from gacli.emit.latex import _text, emit_latex
 
     title = _text(d.system.title or d.system.name)
@@ -78,9 +75,9 @@ def _summary(d: Derivation) -> list[str]:
     ]
 
 
-def derivation_repr(d: Derivation) -> str:
-    """One line that says what the derivation is, without printing its (possibly huge) matrices."""
-    s = d.system
-    return (f"<Derivation of {s.name!r}: k = {d.k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
-            f"speeds {', '.join(str(u) for u in d.speeds)}; M {d.k}x{d.k}, F {d.k}x1>")
+# The derivation is a record of the mechanics stage, which knows nothing of LaTeX; it gets its
+# notebook face here, a stage above, when this module is imported. gacli.api imports it, so every
+# Derivation reached through gacli.derive shows itself typeset, and gacli.equations never imports
+# the emitter that prints it (which would close a circle through gacli.steps).
+Derivation._repr_latex_ = derivation_latex
 
