@@ -52,8 +52,8 @@ from gacli.loading import load_source
 from gacli.model import System
 from gacli.report import dependent_rows
 from gacli.graph import free_symbols, postorder
-from gacli.source import read_source
-from gacli.textsafe import printable, shortened
+from gacli.read.source import read_source
+from gacli.read.textsafe import printable, shortened
 
 DEFAULT_TIMEOUT = 60.0
 SUFFIXES = (".yaml", ".yml")

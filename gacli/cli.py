@@ -89,7 +89,7 @@ def _derive(path: Path, state):
     from gacli.budget import STEP_LOAD, STEP_READ
     from gacli.equations import derive
     from gacli.loading import load_source
-    from gacli.source import read_source
+    from gacli.read.source import read_source
 
     state(STEP_READ)
     source = read_source(path)
@@ -239,7 +239,7 @@ def schema() -> None:
 
     The schema is JSON Schema draft 2020-12, for editors and validators.
     """
-    from gacli.file_schema import schema_text
+    from gacli.read.file_schema import schema_text
 
     typer.echo(schema_text(), nl=False)
 

@@ -16,7 +16,7 @@ from rich.console import Console
 from rich.text import Text
 
 from gacli.errors import Diagnostic
-from gacli.textsafe import MAX_QUOTED, printable, quoted, shortened  # noqa: F401  (re-exported)
+from gacli.read.textsafe import MAX_QUOTED, printable, quoted, shortened  # noqa: F401  (re-exported)
 
 
 def _width() -> int | None:

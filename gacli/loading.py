@@ -20,11 +20,11 @@ from gacli.contact import RollingContacts
 from gacli import symbols as S
 from gacli import trig
 from gacli.errors import Diagnostic, Location, SystemFileError
-from gacli.expr.build import BuildError, Scope, build
-from gacli.expr.grammar import FUNCTIONS, ParseError, parse
+from gacli.read.expr.build import BuildError, Scope, build
+from gacli.read.expr.grammar import FUNCTIONS, ParseError, parse
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
-from gacli.imaginary import imaginary_problem
+from gacli.read.imaginary import imaginary_problem
 from gacli.zero import vanishes
 from gacli.numeric import Program
 from gacli.model import (
@@ -40,7 +40,7 @@ from gacli.model import (
     System,
     Torque,
 )
-from gacli.schema import (
+from gacli.read.schema import (
     BodyDecl,
     FrameDecl,
     LoadDecl,
@@ -51,7 +51,7 @@ from gacli.schema import (
     did_you_mean,
     read_declarations,
 )
-from gacli.source import Scalar, SourceFile, parse_source, read_source
+from gacli.read.source import Scalar, SourceFile, parse_source, read_source
 
 RESERVED = {"t": "time", "pi": "the constant π", "dot": "the rate operator", "ddot": "the rate operator"}
 MAX_SYMBOLS = 500

@@ -50,8 +50,8 @@ from gacli import symbols as S
 from gacli.coerce import as_expr
 from gacli.equations import Derivation
 from gacli.errors import GacliError
-from gacli.expr.build import BuildError, Scope, build
-from gacli.expr.grammar import Name, ParseError, Rate, parse
+from gacli.read.expr.build import BuildError, Scope, build
+from gacli.read.expr.grammar import Name, ParseError, Rate, parse
 from gacli.graph import free_symbols, is_large, shared_subexpressions
 from gacli.suggest import closest_state
 

@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli.expr import grammar
-from gacli.expr.grammar import (
+from gacli.read.expr import grammar
+from gacli.read.expr.grammar import (
     FUNCTIONS,
     MAX_DEPTH,
     MAX_LENGTH,
@@ -580,7 +580,7 @@ def test_sums_built_at_once_are_the_pairwise_expressions(tree: grammar.Node) -> 
     """build adds a chain a ± b ± ... in one Add: exactly what adding pair by pair gives."""
     import sympy as sp
 
-    from gacli.expr.build import Scope, build
+    from gacli.read.expr.build import Scope, build
 
     symbols = {n: sp.Symbol(n, real=True) for n in "xyz"}
     built, expected = build(tree, Scope(values=symbols)), pairwise(tree, symbols)

@@ -8,10 +8,10 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from gacli import schema as reader
+from gacli.read import schema as reader
 from gacli.cli import app
-from gacli.file_schema import SCHEMA_FILE, build_schema, schema_text
-from gacli.source import Mapping, Sequence, parse_source
+from gacli.read.file_schema import SCHEMA_FILE, build_schema, schema_text
+from gacli.read.source import Mapping, Sequence, parse_source
 
 ROOT = Path(__file__).resolve().parent.parent
 SHIPPED = ROOT / "schema" / SCHEMA_FILE

@@ -104,7 +104,7 @@ def test_out_of_memory_anywhere_is_one_message(monkeypatch):
 
 def test_aliases_are_counted_by_the_text_they_repeat():
     from gacli.errors import SystemFileError
-    from gacli.source import MAX_EXPANDED_CHARS, parse_source
+    from gacli.read.source import MAX_EXPANDED_CHARS, parse_source
 
     long = "x" * 10_000
     uses = MAX_EXPANDED_CHARS // len(long) + 1
@@ -116,7 +116,7 @@ def test_aliases_are_counted_by_the_text_they_repeat():
 
 
 def test_anchors_used_as_intended_still_load():
-    from gacli.source import parse_source
+    from gacli.read.source import parse_source
 
     source = parse_source(b"a: &e m*g\nb: [*e, *e, *e]\n", "fine.yaml")
     assert [item.text for item in source.root.items[1][1].items] == ["m*g"] * 3

@@ -178,7 +178,7 @@ def test_a_title_longer_than_the_input_buffer_compiles(tmp_path):
 
 def test_every_allowed_command_exists_in_the_generated_preamble(tmp_path):
     """The grammar's allowlist is only safe to promise if article + amsmath define all of it."""
-    from gacli.texsafe import ACCENTS, SYMBOLS, check_math
+    from gacli.read.texsafe import ACCENTS, SYMBOLS, check_math
 
     names = [rf"\{name}" for name in sorted(SYMBOLS)] + [rf"\{name}{{x}}" for name in sorted(ACCENTS)]
     assert all(check_math(tex) is None for tex in names)

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from gacli.system_name import name_problem
-from gacli.texsafe import MAX_LENGTH, PRINTED, check_math, is_printable_name
+from gacli.read.system_name import name_problem
+from gacli.read.texsafe import MAX_LENGTH, PRINTED, check_math, is_printable_name
 
 ACCEPTED = [
     r"\bar{I}", r"\vartheta", r"\dot x", r"x'^2", r"x_a'", r"{}^a_b", r"x^{a}_{b}", r"x_b^a",

@@ -28,7 +28,7 @@ from gacli.gibbs import gibbs_coefficients
 from gacli.graph import is_small
 from gacli.model import System
 from gacli.readable import TOO_LARGE, Tidy, displayable
-from gacli.texsafe import is_printable_name
+from gacli.read.texsafe import is_printable_name
 from gacli.version import __version__
 
 # Rough printed width (in characters of typeset maths) before a sum is broken.

@@ -16,7 +16,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from gacli.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
+from gacli.read.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
 from gacli.symbols import rate_name
 
 MAX_EXPONENT = 100

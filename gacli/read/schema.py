@@ -14,10 +14,10 @@ import re
 from dataclasses import dataclass, field
 
 from gacli.errors import Diagnostic
-from gacli.source import Mapping, Node, Scalar, Sequence, SourceFile
-from gacli.system_name import name_problem
-from gacli.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
-from gacli.texsafe import check_math
+from gacli.read.source import Mapping, Node, Scalar, Sequence, SourceFile
+from gacli.read.system_name import name_problem
+from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
+from gacli.read.texsafe import check_math
 
 FORMAT_VERSION = 1
 IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

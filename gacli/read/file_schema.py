@@ -4,7 +4,7 @@ Editors that run the YAML language server validate a file as it is typed
 once it starts with ``# yaml-language-server: $schema=<path or URL>``. The
 schema checks shape only (keys, lists, names, which strings may be
 expressions); gacli itself checks everything else. It follows the reader in
-:mod:`gacli.schema` (the tests hold its key lists to that module's, so the
+:mod:`gacli.read.schema` (the tests hold its key lists to that module's, so the
 two cannot drift apart), and the shipped copy
 ``schema/gacli-system-1.schema.json`` is tested to equal :func:`schema_text`.
 No SymPy is imported here.
@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import json
 
-from gacli.expr.grammar import MAX_LENGTH
-from gacli.schema import FORMAT_VERSION
-from gacli.system_name import MAX_LENGTH as NAME_MAX_LENGTH
-from gacli.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
+from gacli.read.expr.grammar import MAX_LENGTH
+from gacli.read.schema import FORMAT_VERSION
+from gacli.read.system_name import MAX_LENGTH as NAME_MAX_LENGTH
+from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
 
 SCHEMA_FILE = f"gacli-system-{FORMAT_VERSION}.schema.json"
 DIALECT = "https://json-schema.org/draft/2020-12/schema"
