@@ -31,7 +31,8 @@ from gacli import frames as F
 from gacli import trig
 from gacli.model import Body, Constraint, Form
 from gacli.rolling_geometry import axle_problem, radius_problem
-from gacli.read.schema import RollingDecl, did_you_mean
+from gacli.read.reader import did_you_mean
+from gacli.read.schema import RollingDecl
 from gacli.zero import vanishes
 
 # Rolling rows: along a wheel (frames.in_wheel_heading), or a plane's axes for a sphere.

@@ -48,9 +48,9 @@ from gacli.read.schema import (
     SystemDecl,
     VectorDecl,
     VelocityConstraintDecl,
-    did_you_mean,
-    read_declarations,
 )
+from gacli.read.declarations import read_declarations
+from gacli.read.reader import did_you_mean
 from gacli.read.source import Scalar, SourceFile, parse_source, read_source
 
 RESERVED = {"t": "time", "pi": "the constant π", "dot": "the rate operator", "ddot": "the rate operator"}

@@ -7,7 +7,7 @@ reserves and that hides nothing: ``name: math`` would write a ``math.h``
 that ``#include <math.h>`` can find first (with ``-I.``, or on a
 case-insensitive file system as ``Math.h``), ``name: numpy`` a module that
 imports itself, ``name: class`` a module no ``import`` statement can name.
-No SymPy here: :mod:`gacli.read.schema` calls :func:`name_problem` at load time.
+No SymPy here: :mod:`gacli.read.declarations` calls :func:`name_problem` at load time.
 
 >>> name_problem("pendulum") is None
 True

@@ -1,0 +1,150 @@
+"""The bodies and what acts on them: the ``bodies`` and ``loads`` sections."""
+
+from __future__ import annotations
+
+from gacli.read.reader import Reader, describe
+from gacli.read.schema import BODY_KEYS, LOAD_KEYS, BodyDecl, LoadDecl
+from gacli.read.source import Mapping, Node, Scalar, Sequence
+
+
+def read_bodies(reader: Reader, top: dict) -> tuple[BodyDecl, ...]:
+    if "bodies" not in top:
+        return ()
+    node = top["bodies"][1]
+    if not isinstance(node, Mapping) or not node.items:
+        reader.error(node, "bodies", f"expected a mapping of named bodies, found {describe(node)}")
+        return ()
+    out = []
+    for key, value in node.items:
+        name = reader.name(key, "bodies")
+        body = _body(reader, key, value, f"bodies.{name}") if name else None
+        if body:
+            out.append(body)
+    return tuple(out)
+
+
+def _body(reader: Reader, key: Scalar, node: Node, where: str) -> BodyDecl | None:
+    fields = reader.mapping(node, where, BODY_KEYS)
+    if not isinstance(node, Mapping):
+        return None
+    for required in ("mass", "position"):
+        if required not in fields:
+            reader.error(node, where, f"missing required key '{required}'")
+    if not _rigid_keys_consistent(reader, fields, where):
+        return None
+    if "mass" not in fields or "position" not in fields:
+        return None
+    mass = reader.expression(fields["mass"][1], f"{where}.mass")
+    position = reader.vector(fields["position"][1], f"{where}.position", (2, 3), point=True)
+    inertia, rotation = _rigid_parts(reader, fields, where)
+    frame = fields["frame"][1] if "frame" in fields else None
+    if frame is not None and not reader.name(frame, f"{where}.frame"):
+        return None
+    description = reader.text(fields["description"][1], f"{where}.description") if "description" in fields else ""
+    if mass is None or position is None:
+        return None
+    return BodyDecl(
+        name=key.text, node=key, mass=mass, position=position,
+        inertia=inertia, inertia_node=fields["inertia"][1] if "inertia" in fields else None,
+        rotation=rotation, rotation_node=fields["rotation"][1] if "rotation" in fields else None,
+        frame=frame, description=description,
+    )
+
+
+def _rigid_keys_consistent(reader: Reader, fields: dict, where: str) -> bool:
+    """A rigid body has inertia and either rotation forms or a frame, not both."""
+    oriented = ("rotation" in fields) or ("frame" in fields)
+    if "rotation" in fields and "frame" in fields:
+        reader.error(fields["frame"][0], where, "give either 'rotation' or 'frame', not both",
+                     "a frame's rotation forms are derived from its orientation")
+        return False
+    if ("inertia" in fields) != oriented:
+        have = "inertia" if "inertia" in fields else ("rotation" if "rotation" in fields else "frame")
+        lack = "'rotation' (or 'frame')" if have == "inertia" else "'inertia'"
+        reader.error(fields[have][0], where, f"a rigid body needs both 'inertia' and 'rotation'; {lack} is missing")
+        return False
+    return True
+
+
+def _rigid_parts(reader: Reader, fields: dict, where: str) -> tuple[tuple[Scalar, ...], tuple[Scalar, ...]]:
+    if "inertia" not in fields:
+        return (), ()
+    inertia_node = fields["inertia"][1]
+    if isinstance(inertia_node, Sequence) and inertia_node.items and isinstance(inertia_node.items[0], Sequence):
+        inertia = _matrix(reader, inertia_node, f"{where}.inertia")
+    else:
+        inertia = reader.expressions(inertia_node, f"{where}.inertia", (0, 1, 3))
+    if "frame" in fields:
+        if isinstance(inertia_node, Scalar):
+            reader.error(inertia_node, f"{where}.inertia", "a body with a frame takes three moments or a 3x3 matrix")
+            return (), ()
+        return inertia, ()
+    rotation_node = fields["rotation"][1]
+    planar = isinstance(inertia_node, Scalar)
+    sizes = (0, 1) if planar else (3,)
+    rotation = reader.expressions(rotation_node, f"{where}.rotation", sizes)
+    if not planar and isinstance(rotation_node, Scalar):
+        reader.error(rotation_node, f"{where}.rotation",
+                     "a scalar rotation (plane motion) goes with a scalar inertia")
+        return (), ()
+    return inertia, rotation
+
+
+def _matrix(reader: Reader, node: Sequence, where: str) -> tuple[Scalar, ...]:
+    if len(node.items) != 3 or not all(isinstance(r, Sequence) and len(r.items) == 3 for r in node.items):
+        reader.error(node, where, "an inertia matrix is 3 rows of 3 expressions")
+        return ()
+    out = []
+    for i, row in enumerate(node.items):
+        out.extend(reader.expressions(row, f"{where}[{i}]", (3,)))
+    return tuple(out) if len(out) == 9 else ()
+
+
+def read_loads(reader: Reader, top: dict) -> tuple[LoadDecl, ...]:
+    if "loads" not in top:
+        return ()
+    node = top["loads"][1]
+    if isinstance(node, Scalar) and node.kind == "null":
+        return ()
+    if not isinstance(node, Sequence):
+        reader.error(node, "loads", f"expected a list of loads, found {describe(node)}")
+        return ()
+    loads = [_load(reader, i, item) for i, item in enumerate(node.items)]
+    return tuple(load for load in loads if load)
+
+
+def _load(reader: Reader, index: int, node: Node) -> LoadDecl | None:
+    where = f"loads[{index}]"
+    fields = reader.mapping(node, where, LOAD_KEYS)
+    if not isinstance(node, Mapping):
+        return None
+    if ("force" in fields) == ("torque" in fields):
+        reader.error(node, where, "a load is either a 'force' (with 'at') or a 'torque' (with 'body')")
+        return None
+    if "force" in fields:
+        return _force(reader, index, node, fields, where)
+    return _torque(reader, index, node, fields, where)
+
+
+def _force(reader: Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
+    if "at" not in fields or "body" in fields:
+        reader.error(node, where, "a force needs 'at': a body, a point, or a position [x, y, z]")
+        return None
+    vector = reader.vector(fields["force"][1], f"{where}.force", (2, 3))
+    at = fields["at"][1]
+    if isinstance(at, Scalar):
+        name = reader.name(at, f"{where}.at")
+        return LoadDecl(index, node, force=vector, at_name=at) if name and vector else None
+    position = reader.vector(at, f"{where}.at", (2, 3))
+    return LoadDecl(index, node, force=vector, at_position=position) if position and vector else None
+
+
+def _torque(reader: Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
+    if "body" not in fields or "at" in fields:
+        reader.error(node, where, "a torque needs 'body': the body it acts on")
+        return None
+    vector = reader.vector(fields["torque"][1], f"{where}.torque", (0, 1, 3))
+    body = fields["body"][1]
+    if not reader.name(body, f"{where}.body") or not vector:
+        return None
+    return LoadDecl(index, node, torque=vector, body=body)

@@ -1,0 +1,121 @@
+"""The declared names and how their rates are tied: ``parameters``, ``functions``,
+``inputs``, ``coordinates``, ``quasi_coordinates``, ``constraints`` and ``independent``."""
+
+from __future__ import annotations
+
+from gacli.read.reader import Reader, describe
+from gacli.read.schema import (
+    QUASI_KEYS,
+    SYMBOL_KEYS,
+    SYMBOL_SECTIONS,
+    VELOCITY_CONSTRAINT_KEYS,
+    SymbolDecl,
+    VelocityConstraintDecl,
+)
+from gacli.read.source import Mapping, Node, Scalar, Sequence
+from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
+from gacli.read.texsafe import check_math
+
+
+def read_symbols(reader: Reader, top: dict) -> tuple[SymbolDecl, ...]:
+    out: list[SymbolDecl] = []
+    for section in SYMBOL_SECTIONS:
+        if section in top:
+            kind = section.rstrip("s").replace("quasi_coordinate", "quasi")
+            out.extend(_symbol_section(reader, top[section][1], section, kind))
+    return tuple(out)
+
+
+def _symbol_section(reader: Reader, node: Node, section: str, kind: str) -> list[SymbolDecl]:
+    if isinstance(node, Sequence):
+        names = [(item, reader.name(item, f"{section}[{i}]")) for i, item in enumerate(node.items)]
+        return [SymbolDecl(kind, name, item) for item, name in names if name]
+    if isinstance(node, Mapping):
+        out = []
+        for key, value in node.items:
+            name = reader.name(key, section)
+            if name:
+                out.append(_symbol_entry(reader, kind, key, value, f"{section}.{name}"))
+        return out
+    if isinstance(node, Scalar) and node.kind == "null":
+        return []
+    reader.error(node, section, f"expected a list of names or a mapping, found {describe(node)}")
+    return []
+
+
+def _symbol_entry(reader: Reader, kind: str, key: Scalar, value: Node, where: str) -> SymbolDecl:
+    if isinstance(value, Scalar):
+        if value.kind == "null":
+            return SymbolDecl(kind, key.text, key)
+        if kind == "quasi":
+            return SymbolDecl(kind, key.text, key, differential=reader.expression(value, where))
+        return SymbolDecl(kind, key.text, key, description=value.text)
+    allowed = QUASI_KEYS if kind == "quasi" else SYMBOL_KEYS
+    if kind in ("input", "coordinate"):
+        allowed = tuple(k for k in allowed if k != "value")
+    fields = reader.mapping(value, where, allowed)
+    get = lambda k: fields[k][1] if k in fields else None  # noqa: E731
+    return SymbolDecl(
+        kind, key.text, key,
+        description=reader.text(get("description"), f"{where}.description") if get("description") else "",
+        value=reader.expression(get("value"), f"{where}.value") if get("value") else None,
+        unit=reader.text(get("unit"), f"{where}.unit") if get("unit") else "",
+        latex=_latex(reader, get("latex"), f"{where}.latex"),
+        differential=reader.expression(get("differential"), f"{where}.differential") if get("differential") else None,
+    )
+
+
+def _latex(reader: Reader, node: Node | None, where: str) -> str:
+    """A ``latex:`` override, only if it is a math name TeX cannot run (see gacli.read.texsafe)."""
+    if node is None:
+        return ""
+    text = reader.text(node, where)
+    if not text or not isinstance(node, Scalar):
+        return ""
+    problem = check_math(text)
+    if problem is None:
+        return text
+    reader.error(node, where, f"bad LaTeX override: {problem.message}",
+                 f"a name in math TeX of at most {LATEX_MAX_LENGTH} characters: letters, digits, "
+                 "^ _ { } ' , and commands such as \\alpha, \\dot, \\hat, \\mathrm",
+                 offset=problem.offset)
+    return ""
+
+
+def read_constraints(reader: Reader, top: dict) -> tuple[Scalar, ...]:
+    if "constraints" not in top:
+        return ()
+    node = top["constraints"][1]
+    if isinstance(node, Scalar) and node.kind == "null":
+        return ()
+    if not isinstance(node, Sequence):
+        reader.error(node, "constraints", f"expected a list of constraints, found {describe(node)}")
+        return ()
+    items = [_constraint(reader, i, item) for i, item in enumerate(node.items)]
+    return tuple(item for item in items if item)
+
+
+def _constraint(reader: Reader, index: int, node: Node):
+    where = f"constraints[{index}]"
+    if not isinstance(node, Mapping):
+        return reader.expression(node, where)
+    fields = reader.mapping(node, where, VELOCITY_CONSTRAINT_KEYS)
+    if "velocity_of" not in fields or "along" not in fields:
+        reader.error(node, where, "a velocity constraint needs 'velocity_of' (a point) and 'along' (a vector)")
+        return None
+    point = fields["velocity_of"][1]
+    along = reader.vector(fields["along"][1], f"{where}.along", (2, 3))
+    if not reader.name(point, f"{where}.velocity_of") or along is None:
+        return None
+    return VelocityConstraintDecl(index, node, point, along)
+
+
+def read_independent(reader: Reader, top: dict) -> tuple[Scalar, ...] | None:
+    if "independent" not in top:
+        return None
+    node = top["independent"][1]
+    if not isinstance(node, Sequence):
+        reader.error(node, "independent", f"expected a list of names, found {describe(node)}")
+        return None
+    names = [item for i, item in enumerate(node.items) if reader.name(item, f"independent[{i}]")]
+    return tuple(names)
