@@ -173,7 +173,8 @@ def _expression(value) -> sp.Expr:
 def evaluate_assignments(pairs, parameters: Mapping[str, float], option: str) -> dict[str, float]:
     """Numbers from ``name=expression`` pairs; expressions in numbers and parameters (safe parser)."""
     from gacli.read.expr.build import BuildError, Scope, build
-    from gacli.read.expr.grammar import ParseError, parse
+    from gacli.read.expr.grammar import ParseError
+    from gacli.read.expr.parser import parse
 
     scope = Scope(values={n: sp.Float(v, 30) for n, v in parameters.items()})
     out = {}

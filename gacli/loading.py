@@ -21,7 +21,8 @@ from gacli import symbols as S
 from gacli import trig
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.read.expr.build import BuildError, Scope, build
-from gacli.read.expr.grammar import FUNCTIONS, ParseError, parse
+from gacli.read.expr.grammar import FUNCTIONS, ParseError
+from gacli.read.expr.parser import parse
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import is_small
 from gacli.read.imaginary import imaginary_problem

@@ -51,7 +51,8 @@ from gacli.coerce import as_expr
 from gacli.equations import Derivation
 from gacli.errors import GacliError
 from gacli.read.expr.build import BuildError, Scope, build
-from gacli.read.expr.grammar import Name, ParseError, Rate, parse
+from gacli.read.expr.grammar import Name, ParseError, Rate
+from gacli.read.expr.parser import parse
 from gacli.graph import free_symbols, is_large, shared_subexpressions
 from gacli.suggest import closest_state
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli.read.expr import grammar
+from gacli.read.expr import grammar, parser, tokens
 from gacli.read.expr.grammar import (
     FUNCTIONS,
     MAX_DEPTH,
@@ -23,10 +23,10 @@ from gacli.read.expr.grammar import (
     ParseError,
     Rate,
     names,
-    parse,
     render,
     walk,
 )
+from gacli.read.expr.parser import parse
 
 x, y, z = Name("x"), Name("y"), Name("z")
 a, b, c = Name("a"), Name("b"), Name("c")
@@ -458,6 +458,18 @@ def test_module_never_evaluates() -> None:
                         "re", "typing", "unicodedata"}
     called = {n.func.id for n in ast.walk(module)
               if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)}
+    assert not called & {"eval", "exec", "compile", "__import__", "getattr", "sympify"}
+
+
+@pytest.mark.parametrize("module", [tokens, parser])
+def test_the_tokenizer_and_parser_never_evaluate(module) -> None:
+    # The same guarantee for the modules that read the text; they may import only each other and grammar.
+    tree = ast.parse(pathlib.Path(module.__file__).read_text())
+    imported = {alias.name for n in ast.walk(tree) if isinstance(n, ast.Import) for alias in n.names}
+    imported |= {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)}
+    assert imported <= {"__future__", "difflib", "keyword", "re", "typing", "unicodedata",
+                        "gacli.read.expr.grammar", "gacli.read.expr.tokens"}
+    called = {n.func.id for n in ast.walk(tree) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)}
     assert not called & {"eval", "exec", "compile", "__import__", "getattr", "sympify"}
 
 

@@ -15,7 +15,8 @@ from typer.testing import CliRunner
 from conftest import SYSTEMS, require_tool
 from gacli.cli import app
 from gacli.read.expr.build import Scope, build
-from gacli.read.expr.grammar import Name, Rate, parse, walk
+from gacli.read.expr.grammar import Name, Rate, walk
+from gacli.read.expr.parser import parse
 
 
 def sym(name):
