@@ -34,9 +34,10 @@ def readable_size(d: Derivation, limit: int = REPR_NODES) -> bool:
 
 def derivation_latex(d: Derivation) -> str:
     """Jupyter: the equations as ``gacli derive --format latex`` prints them, or a summary when too large."""
-    from gacli.emit.latex import _text, emit_latex
+    from gacli.emit.latex import emit_latex
+    from gacli.emit.latex_text import tex_text
 
-    title = _text(d.system.title or d.system.name)
+    title = tex_text(d.system.title or d.system.name)
     if not readable_size(d):
         return "\n\n".join([title, *_summary(d), TOO_LARGE]) + "\n"
     ((_, tex),) = emit_latex(d).items()
@@ -60,7 +61,7 @@ def _comments_as_text(tex: str) -> list[str]:
 
 
 def _summary(d: Derivation) -> list[str]:
-    from gacli.emit.latex import printer_for
+    from gacli.emit.latex_printer import printer_for
 
     import sympy as sp
 

@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from gacli.emit.latex import GacliLatexPrinter, emit_latex, latex_names, split_rate
+from gacli.emit.latex import emit_latex
+from gacli.emit.latex_printer import GacliLatexPrinter, latex_names, split_rate
 from gacli.equations import derive
 from gacli.loading import load, loads
 

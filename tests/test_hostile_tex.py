@@ -21,7 +21,8 @@ from typer.testing import CliRunner
 
 from conftest import require_tool
 from gacli.cli import app
-from gacli.emit.latex import GacliLatexPrinter, emit_latex
+from gacli.emit.latex import emit_latex
+from gacli.emit.latex_printer import GacliLatexPrinter
 from gacli.equations import derive
 from gacli.loading import loads
 
