@@ -8,6 +8,7 @@ from gacli.read.source import Mapping, Node, Scalar, Sequence
 
 
 def read_bodies(reader: Reader, top: dict) -> tuple[BodyDecl, ...]:
+    """The ``bodies`` mapping: particles, and rigid bodies with inertia and either rotation forms or a frame."""
     if "bodies" not in top:
         return ()
     node = top["bodies"][1]
@@ -101,6 +102,7 @@ def _matrix(reader: Reader, node: Sequence, where: str) -> tuple[Scalar, ...]:
 
 
 def read_loads(reader: Reader, top: dict) -> tuple[LoadDecl, ...]:
+    """The ``loads`` list: forces (``at`` a body, a point or a position) and torques (on a ``body``)."""
     if "loads" not in top:
         return ()
     node = top["loads"][1]

@@ -10,6 +10,7 @@ from gacli.read.source import Mapping, Node, Scalar, Sequence
 
 
 def read_frames(reader: Reader, top: dict) -> tuple[FrameDecl, ...]:
+    """The ``frames`` mapping: rotations from a parent (or a ``sequence`` of angles) and an ``origin``."""
     if "frames" not in top:
         return ()
     node = top["frames"][1]
@@ -87,6 +88,7 @@ def _axis_ok(reader: Reader, axis: Scalar, where: str) -> bool:
 
 
 def read_points(reader: Reader, top: dict) -> tuple[PointDecl, ...]:
+    """The ``points`` mapping: named positions."""
     if "points" not in top:
         return ()
     node = top["points"][1]
@@ -103,6 +105,7 @@ def read_points(reader: Reader, top: dict) -> tuple[PointDecl, ...]:
 
 
 def read_rolling(reader: Reader, top: dict) -> tuple[RollingDecl, ...]:
+    """The ``rolling`` list: bodies rolling without slipping on the plane z = 0 of a frame."""
     if "rolling" not in top:
         return ()
     node = top["rolling"][1]

@@ -18,6 +18,7 @@ from gacli.read.texsafe import check_math
 
 
 def read_symbols(reader: Reader, top: dict) -> tuple[SymbolDecl, ...]:
+    """The sections ``parameters``, ``functions``, ``inputs``, ``coordinates``, ``quasi_coordinates``."""
     out: list[SymbolDecl] = []
     for section in SYMBOL_SECTIONS:
         if section in top:
@@ -83,6 +84,7 @@ def _latex(reader: Reader, node: Node | None, where: str) -> str:
 
 
 def read_constraints(reader: Reader, top: dict) -> tuple[Scalar, ...]:
+    """The ``constraints`` list: expressions, and velocity constraints (``velocity_of`` a point ``along`` a vector)."""
     if "constraints" not in top:
         return ()
     node = top["constraints"][1]
@@ -111,6 +113,7 @@ def _constraint(reader: Reader, index: int, node: Node):
 
 
 def read_independent(reader: Reader, top: dict) -> tuple[Scalar, ...] | None:
+    """The names listed under ``independent``; None when the section is absent."""
     if "independent" not in top:
         return None
     node = top["independent"][1]

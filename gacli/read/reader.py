@@ -101,6 +101,7 @@ class Reader:
 
 
 def did_you_mean(word: str, choices) -> str:
+    """A hint naming the closest of ``choices``, or "" when none is close."""
     close = difflib.get_close_matches(word, sorted(choices), n=1, cutoff=0.6)
     return f"did you mean '{close[0]}'?" if close else ""
 
@@ -111,6 +112,7 @@ def _sizes(sizes: tuple[int, ...]) -> str:
 
 
 def describe(node: Node) -> str:
+    """What a node is, as a message says it: 'a mapping', 'a list', 'nothing' or its text quoted."""
     if isinstance(node, Mapping):
         return "a mapping"
     if isinstance(node, Sequence):
