@@ -40,7 +40,8 @@ from gacli import symbols as S
 from gacli import trig
 from gacli.gibbs import _body_gibbs, acceleration_chain
 from gacli.graph import shared_subexpressions, substitute
-from gacli.kinematics import body_motions, solve_rates
+from gacli.motions import body_motions
+from gacli.rates import solve_rates
 from gacli.loading import load
 from gacli.numeric import Program
 

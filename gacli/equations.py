@@ -27,7 +27,9 @@ from gacli.canonical import product as canonical_product
 from gacli.errors import DerivationError
 from gacli.forces import generalized_forces
 from gacli.gibbs import gibbs_function
-from gacli.kinematics import BodyMotion, Rates, body_motions, motion_velocity, product, solve_rates
+from gacli.matrices import product
+from gacli.motions import BodyMotion, body_motions, motion_context, motion_velocity
+from gacli.rates import Rates, solve_rates
 from gacli import trig
 from gacli.model import System
 
@@ -48,6 +50,8 @@ class Derivation:
     forcing: sp.ImmutableMatrix
     generalized_forces: sp.ImmutableMatrix
     kinematic_equations: tuple[tuple[str, sp.Expr], ...]
+    # r̈ = β u̇ + γ for each dependent rate (eq. 14.14), as the motions used them.
+    dependent_accelerations: tuple[tuple[str, sp.Expr], ...] = ()
 
     def __repr__(self) -> str:
         # One line: the dataclass repr would print every matrix. The notebook's typeset face
@@ -147,7 +151,8 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     step("rates in terms of the independent rates (14.7)")
     rates = solve_rates(system)
     step("velocities and accelerations (14.14)")
-    motions = body_motions(system, rates)
+    context = motion_context(system, rates)
+    motions = body_motions(system, rates, context)
     step("generalized forces (14.13)")
     Q = generalized_forces(system, rates, motions)
     step("Gibbs-Appell equations (14.19)")
@@ -156,7 +161,19 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     return Derivation(
         system=system, rates=rates, motions=motions, mass_matrix=M, forcing=F,
         generalized_forces=Q, kinematic_equations=kinematic,
+        dependent_accelerations=_dependent_accelerations(rates, context.gamma),
     )
+
+
+def _dependent_accelerations(rates: Rates, gamma: dict[str, sp.Expr]) -> tuple[tuple[str, sp.Expr], ...]:
+    """r̈ = β u̇ + γ for each dependent rate: the rate's row of β times u̇, plus γ."""
+    out = []
+    for i, name in enumerate(rates.names):
+        if name in rates.independent:
+            continue
+        row = [b * a for b, a in zip(rates.beta.row(i), rates.speed_rates) if b != 0]
+        out.append((name, sp.Add(*row, gamma[name])))
+    return tuple(out)
 
 
 def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates, Q: sp.ImmutableMatrix,

@@ -37,7 +37,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.coerce import as_expr
-from gacli.kinematics import function_chain
+from gacli.rates import function_chain
 from gacli.model import Body, Form, System
 
 OneForm = dict[str, sp.Expr]

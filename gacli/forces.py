@@ -16,7 +16,9 @@ from gacli import symbols as S
 from gacli import trig
 from gacli.fastdiff import jacobian_rows
 from gacli.graph import substitute
-from gacli.kinematics import BodyMotion, Rates, product_rows
+from gacli.matrices import product_rows
+from gacli.motions import BodyMotion
+from gacli.rates import Rates
 from gacli.model import System
 
 

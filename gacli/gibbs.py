@@ -14,7 +14,8 @@ import sympy as sp
 from gacli import symbols as S
 from gacli.graph import is_small
 from gacli import trig
-from gacli.kinematics import BodyMotion, Rates, configuration_chain, motion_velocity
+from gacli.motions import BodyMotion, motion_velocity
+from gacli.rates import Rates, configuration_chain
 from gacli.model import System
 
 

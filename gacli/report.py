@@ -32,7 +32,7 @@ def dependent_rows(d: Derivation) -> tuple[str, ...]:
     """
     if d.rates.constraints_used == len(d.system.constraints):
         return ()
-    from gacli.kinematics import relation_rows
+    from gacli.rates import relation_rows
 
     kept = {where for where, _, _ in relation_rows(d.system)[0]}
     return tuple(w for w in (f"constraints[{i}]" for i in range(len(d.system.constraints))) if w not in kept)

@@ -15,7 +15,8 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.equations import Derivation
-from gacli.gibbs import acceleration_chain, gibbs_entries
+from gacli.gibbs import gibbs_entries
+from gacli.motions import motion_acceleration, motion_velocity
 from gacli.readable import STEP_BUDGET_OPS, Tidy
 
 
@@ -99,26 +100,22 @@ def rate_relations(d: Derivation, tidy: Tidy) -> Step:
 
 
 def accelerations_and_gibbs(d: Derivation, tidy: Tidy) -> Step:
-    chain = acceleration_chain(d.system, d.rates)
+    """The accelerations as the derivation formed them (eq. 14.14), then G (eqs. 14.17, 14.21)."""
     acc = d.speed_rates
-    u = sp.Matrix(d.speeds)
     items: list[str | Equation] = []
-    dependent = [n for n in d.rates.names if n not in d.independent]
-    if dependent:
+    if d.dependent_accelerations:
         items.append("Differentiating the rates gives the dependent accelerations (eq. 14.14):")
-        for n in dependent:
-            items.append(Equation(S.rate(n, 2), tidy.collected(S.time_derivative(d.rates.rate(n), chain), acc), "14.14"))
+        items += [Equation(S.rate(n, 2), tidy.collected(e, acc), "14.14") for n, e in d.dependent_accelerations]
     whole = sp.S.Zero
     for motion in d.motions:
         body = motion.body
-        v = motion.linear.partials * u + motion.linear.velocity0
-        a = [tidy.collected(S.time_derivative(e, chain), acc) for e in v]
+        a = [tidy.collected(e, acc) for e in motion_acceleration(motion.linear, acc)]
         items.append(f"Acceleration of {body.name} (centre of mass), components along the inertial axes:")
         items.append(Equation(sp.Symbol(f"a_{body.name}"), sp.Matrix([a]).T))
         whole += body.mass / 2 * sum(c**2 for c in a)
         if motion.angular is not None:
-            w = motion.angular.partials * u + motion.angular.velocity0
-            alpha = [tidy.collected(S.time_derivative(e, chain), acc) for e in w]
+            w = motion_velocity(motion.angular, d.speeds)
+            alpha = [tidy.collected(e, acc) for e in motion_acceleration(motion.angular, acc)]
             items.append(f"Angular acceleration of {body.name}, body axes:")
             items.append(Equation(sp.Symbol(f"alpha_{body.name}"), sp.Matrix([alpha]).T))
             I, al, wv = body.inertia, sp.Matrix(alpha), sp.Matrix([tidy(e) for e in w])

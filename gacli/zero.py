@@ -174,7 +174,7 @@ def vanishes(expr: sp.Expr, simplify: bool = True) -> bool:
                 return sp.simplify(expr) == 0
         except (ArithmeticError, ValueError, TypeError, RecursionError):
             return False
-    from gacli.kinematics import random_point
+    from gacli.matrices import random_point
 
     for seed in (1, 2, 3):
         try:

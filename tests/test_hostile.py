@@ -164,11 +164,11 @@ def test_github_annotations_from_a_subprocess(tmp_path: Path):
 
 _CORE = (HOSTILE.parent.parent / "systems" / "cylinder_in_cylinder.yaml").read_text(encoding="utf-8")
 KNOWN_CORE_CRASHES = {
-    # kinematics._numeric: np.array(..., dtype=float) of a coefficient that is complex at the random point
+    # rates._numeric: np.array(..., dtype=float) of a coefficient that is complex at the random point
     "complex_coefficient_in_rank_check": "  - sqrt(1 - theta**2)*dphi = c*dtheta",
-    # kinematics._rank: NaN in the numeric matrix, numpy's SVD does not converge
+    # matrices.rank: NaN in the numeric matrix, numpy's SVD does not converge
     "nan_coefficient_in_rank_check": "  - a*dphi = atan2(0, atan2(0, a))*dtheta",
-    # loading._linearity_problem: SymPy raises OverflowError on cosh(cosh(1e300))
+    # load_forms._linearity_problem: SymPy raises OverflowError on cosh(cosh(1e300))
     "overflow_in_linearity_check": "  - a*dphi = cosh(cosh(1e300))*dtheta",
     # build._call: SymPy raises ValueError ('... is not a prime') evaluating cos(atan2(1e300, 0.5))
     "value_error_in_build": "  - a*dphi = cos(atan2(1e300, 0.5))*dtheta",

@@ -1,0 +1,200 @@
+"""Differential forms and constraints of a system file, for the loader's builder.
+
+Constraints (eq. 14.1) and quasi-coordinate definitions (eq. 14.2) are read as
+forms linear in the differentials; a constraint nonlinear in the rates is solved
+for the rate it determines (docs/nonlinear.md), a finite one is differentiated.
+:class:`Forms` is a part of :class:`gacli.loading._Builder`: it reads expressions
+and reports through it.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli import nonlinear as NL
+from gacli import symbols as S
+from gacli import trig
+from gacli.read.expr.build import Scope
+from gacli.fastdiff import jacobian_rows
+from gacli.graph import is_small
+from gacli.zero import vanishes
+from gacli.model import Constraint, Form, QuasiCoordinate
+from gacli.read.schema import SymbolDecl, VelocityConstraintDecl
+from gacli.read.source import Scalar
+
+
+class Forms:
+    """Forms, quasi-coordinates and constraints, for the loader's builder."""
+
+    def _form(self, text: Scalar, where: str, scope: Scope, start: int = 0, stop: int | None = None) -> Form | None:
+        expr = self.expression(text, where, scope, start, stop)
+        if expr is None:
+            return None
+        return self._as_form(expr, text, where, start)
+
+    def _as_form(self, expr: sp.Expr, text: Scalar, where: str, start: int = 0) -> Form | None:
+        try:
+            return self._linear_form(expr, text, where, start)
+        except (ArithmeticError, ValueError, TypeError, RecursionError):
+            # SymPy evaluates numbers as it goes; an extreme one (cosh(cosh(1e300))) overflows.
+            self.error(text, where, "this form cannot be evaluated: a number in it is too large", offset=start)
+            return None
+
+    def _linear_form(self, expr: sp.Expr, text: Scalar, where: str, start: int) -> Form | None:
+        names = self.scopes.rate_names
+        free = expr.free_symbols
+        present = [d for d in [S.differential(n) for n in names] + [S.DT] if d in free]
+        # One memoised pass for all the coefficients (sp.diff walks the form once per differential).
+        partials = dict(zip(present, jacobian_rows([expr], present)[0])) if present else {}
+        problem = _linearity_problem(expr, partials)
+        if problem:
+            self.error(text, where, problem, offset=start)
+            return None
+        coefficients = ((n, partials.get(S.differential(n), sp.S.Zero)) for n in names)
+        return Form(tuple((n, c) for n, c in coefficients if c != 0), partials.get(S.DT, sp.S.Zero))
+
+    def _quasi(self, sym: SymbolDecl) -> QuasiCoordinate:
+        form = None
+        if sym.differential is not None:
+            form = self._form(sym.differential, f"quasi_coordinates.{sym.name}", self.scopes.form)
+            if form is not None and not form.coefficients and form.dt == 0:
+                self.error(sym.differential, f"quasi_coordinates.{sym.name}", "the differential is zero")
+        return QuasiCoordinate(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, form)
+
+    def _constraint(self, index: int, text) -> Constraint | None:
+        where = f"constraints[{index}]"
+        if isinstance(text, VelocityConstraintDecl):
+            return self._velocity_constraint(text, where)
+        sides = _split_equation(text.text)
+        if isinstance(sides, int):
+            self.error(text, where, "a constraint has at most one '=' (write lhs = rhs)", offset=sides)
+            return None
+        parts = [self.expression(text, where, self.scopes.constraint, a, b) for a, b in sides]
+        if any(p is None for p in parts):
+            return None
+        expr = parts[0] - parts[1] if len(parts) == 2 else parts[0]
+        diffs = {S.differential(n) for n in self.scopes.rate_names} | {S.DT}
+        rates = {S.rate(n) for n in self.scopes.rate_names}
+        try:
+            nonlinear = bool(expr.free_symbols & rates) or bool(expr.free_symbols & diffs) and not _is_linear_form(expr, diffs)
+        except (ArithmeticError, ValueError, TypeError, RecursionError):
+            # SymPy evaluates numbers as it goes; an extreme one (cosh(cosh(1e300))) overflows.
+            self.error(text, where, "this form cannot be evaluated: a number in it is too large")
+            return None
+        if nonlinear:
+            try:
+                return self._rate_constraint(expr, parts[0] if len(parts) == 2 else None, text, where)
+            except (ArithmeticError, ValueError, TypeError, RecursionError):
+                self.error(text, where, "this relation cannot be evaluated: a number in it is too large")
+                return None
+        if expr.free_symbols & diffs:
+            form = self._as_form(expr, text, where)
+            return Constraint(form, self.where_of(text), text.text) if form else None
+        return self._finite_constraint(expr, text, where)
+
+    def _rate_constraint(self, expr: sp.Expr, lhs: sp.Expr | None, text: Scalar, where: str) -> Constraint | None:
+        """A constraint nonlinear in the rates (docs/nonlinear.md): solved for the rate it determines."""
+        names = self.scopes.rate_names
+        g, kind = NL.rate_form(expr, names)
+        if g is None and kind == "homogeneous":
+            present = expr.free_symbols & ({S.differential(n) for n in names} | {S.DT})
+            self.error(text, where, f"the form is not linear in the differentials: {_offending_term(expr, present)}, "
+                       "nor homogeneous of degree one in them (as a velocity relation such as "
+                       "dz = -c*sqrt(dx**2 + dy**2) is)")
+            return None
+        if g is None:
+            self.error(text, where, kind)
+            return None
+        preferred = next((n for n in names if lhs in (S.rate(n), S.differential(n))), None)
+        independent = self.decl.independent
+        solved = NL.solve_for_rate(g, names, preferred, [s.text for s in independent] if independent else None)
+        if isinstance(solved, str):
+            self.error(text, where, solved)
+            return None
+        coefficients, rest = NL.linearized_row(g, names)
+        return Constraint(Form(coefficients, rest), self.where_of(text), text.text, rates=solved)
+
+    def _finite_constraint(self, expr: sp.Expr, text: Scalar, where: str) -> Constraint | None:
+        """f(q, t) = 0 is used through df = 0."""
+        if expr == 0:
+            self.error(text, where, "the constraint is identically satisfied")
+            return None
+        coordinates = [s.name for s in self.decl.of_kind("coordinate")]
+        gradient = tuple((n, sp.diff(expr, S.value(n))) for n in coordinates)
+        dt = S.time_derivative(expr, self.scopes.function_chain)
+        return Constraint(Form(tuple((n, c) for n, c in gradient if c != 0), dt), self.where_of(text), text.text, expr)
+
+    def differential(self, expr: sp.Expr) -> sp.Matrix:
+        """d(expr) as a row over the differentials of the rate names, then dt."""
+        coordinates = {s.name for s in self.decl.of_kind("coordinate")}
+        row = [sp.diff(expr, S.value(n)) if n in coordinates else sp.S.Zero for n in self.scopes.rate_names]
+        return sp.Matrix([row + [S.time_derivative(expr, self.scopes.function_chain)]])
+
+    def _velocity_form(self, position) -> sp.Matrix:
+        """d r of a point (inertial components), as a form vector."""
+        return sp.Matrix.vstack(*(self.differential(c) for c in position))
+
+    def _velocity_constraint(self, decl: VelocityConstraintDecl, where: str) -> Constraint | None:
+        point = self._point_named(decl.point, f"{where}.velocity_of")
+        along = self._in_frames(decl.along, f"{where}.along", self.scopes.config)
+        if point is None or along is None:
+            return None
+        row = sp.Matrix([along]) * self._velocity_form(point)
+        return Constraint(self._row_form(row), self.where_of(decl.node), f"velocity of {decl.point.text} along {list(along)}")
+
+    def _row_form(self, row: sp.Matrix) -> Form:
+        names = self.scopes.rate_names
+        coefficients = tuple((n, row[j]) for j, n in enumerate(names) if row[j] != 0)
+        return Form(coefficients, row[len(names)])
+
+
+def _split_equation(text: str) -> list[tuple[int, int | None]] | int:
+    """Spans of the sides of 'lhs = rhs', or the offset of a second '='."""
+    first = text.find("=")
+    if first < 0:
+        return [(0, None)]
+    second = text.find("=", first + 1)
+    if second >= 0:
+        return second
+    return [(0, first), (first + 1, None)]
+
+
+def _is_linear_form(expr: sp.Expr, diffs: set[sp.Symbol]) -> bool:
+    """Whether no differential's coefficient holds a differential (cheap: degree two is enough to refuse)."""
+    present = expr.free_symbols & diffs
+    return all(not (sp.diff(expr, d).free_symbols & present) for d in present)
+
+
+def _linearity_problem(expr: sp.Expr, partials: dict[sp.Symbol, sp.Expr]) -> str:
+    """Why ``expr`` is not a linear form in the differentials it has ('' when it is).
+
+    ``partials`` maps each differential present in ``expr`` to ∂expr/∂d.
+    """
+    present = set(partials)
+    if not present:
+        return "expected a differential form (a combination of differentials such as dx and dt), found no differential"
+    for d in sorted(present, key=sp.default_sort_key):
+        if partials[d].free_symbols & present:
+            return f"the form is not linear in the differentials: {_offending_term(expr, present)}"
+    rest = expr.xreplace({d: 0 for d in present})
+    if not vanishes(rest):
+        return f"every term of a differential form needs a differential; '{_plain(rest)}' has none"
+    return ""
+
+
+def _offending_term(expr: sp.Expr, present: set) -> str:
+    # A small tree may still multiply out to millions of terms ((dx + x + ... )**100).
+    if not is_small(expr, 400) or trig.expanded_terms(expr, 2_000) > 2_000:
+        return "a differential appears inside a power or a function"
+    for term in sp.Add.make_args(sp.expand(expr)):
+        degree = sum(sp.degree(term, d) for d in present if d in term.free_symbols) if term.is_polynomial(*present) else 2
+        if degree > 1:
+            return f"term '{_plain(term)}' is not linear"
+    return "a differential appears inside a function"
+
+
+def _plain(expr: sp.Expr) -> str:
+    """An expression written in the file's grammar (differentials as dx)."""
+    text = sp.sstr(expr)
+    return text.replace("d[", "d").replace("]", "")
+
