@@ -28,7 +28,7 @@ _CHARACTERS = r"\sA-Za-z0-9_.+\-*/(),"
 EXPRESSION_PATTERN = rf"^[{_CHARACTERS}]*[A-Za-z0-9_.)][{_CHARACTERS}]*$"
 CONSTRAINT_PATTERN = rf"^[{_CHARACTERS}]*(=[{_CHARACTERS}]*)?$"
 AXES = ["x", "y", "z", "X", "Y", "Z"]
-# The characters of a latex: override (gacli.texsafe checks the commands and braces).
+# The characters of a latex: override (gacli.read.texsafe checks the commands and braces).
 LATEX_PATTERN = r"^[A-Za-z0-9\\^_{}', ]*$"
 
 
