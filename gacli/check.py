@@ -39,17 +39,10 @@ from gacli.errors import (
     Location,
     SystemFileError,
 )
-from gacli.integrability import (
-    Classification,
-    UndefinedValue,
-    classify,
-    decide_zero,
-    evaluate,
-    sample_points,
-    time_limit,
-)
+from gacli.integrability import Classification, classify, decide_zero, time_limit
 from gacli.loading import load_source
 from gacli.model import System
+from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
 from gacli.report import dependent_rows
 from gacli.graph import free_symbols, postorder
 from gacli.source import read_source
@@ -426,21 +419,6 @@ def _symmetric(M: sp.ImmutableMatrix, findings: _Findings, where: Location) -> b
             if decision.zero is None:
                 answer = None
     return answer
-
-
-def parameter_values(system: System) -> tuple[dict[sp.Symbol, float], list[str]]:
-    """Numeric values of the parameters (values may name earlier ones) and the names without one."""
-    values: dict[sp.Symbol, float] = {}
-    missing = []
-    for p in system.parameters:
-        if p.value is None:
-            missing.append(p.name)
-            continue
-        try:
-            values[S.value(p.name)] = float(evaluate(p.value, values)[0])
-        except UndefinedValue:
-            missing.append(p.name)
-    return values, missing
 
 
 def _positive_definite(system: System, M, values, symmetric, findings: _Findings,

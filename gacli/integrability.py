@@ -50,7 +50,9 @@ import sympy as sp
 
 from gacli.coerce import as_expr
 from gacli.errors import GacliError, Location
-from gacli.evaluate import _DIGITS, _RELATIVE_TOLERANCE, UndefinedValue, evaluate
+from gacli.numeric import UndefinedValue, evaluate  # noqa: F401 - re-exported
+from gacli.numeric.guarded import DIGITS as _DIGITS
+from gacli.numeric.guarded import RELATIVE_TOLERANCE as _RELATIVE_TOLERANCE
 from gacli.exterior import Calculus, OneForm, Structure, structures
 from gacli.model import Form, System
 from gacli.zero import (  # noqa: F401 - re-exported

@@ -52,7 +52,8 @@ from gacli.equations import Derivation
 from gacli.errors import GacliError
 from gacli.expr.build import BuildError, Scope, build
 from gacli.expr.grammar import Name, ParseError, Rate, parse
-from gacli.graph import free_symbols, is_large, shared_subexpressions
+from gacli.graph import free_symbols
+from gacli.numeric.compiled import scalar, vectorized
 from gacli.suggest import closest_state
 
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -367,14 +368,12 @@ class _Problem:
         r = ()
         if r_exprs:
             arguments = _arguments(values.state, values.parameter_names)
-            compiled = sp.lambdify(arguments, list(r_exprs), modules="math", dummify=True)
+            compiled = scalar(arguments, r_exprs)
             r = lambda t, x: compiled(t, *x, *p)  # noqa: E731
         return _Problem(derivation, module, values.state, values.parameter_names, p, x0, r, functions)
 
     def _vectorized(self, expr: sp.Expr, extra=()) -> Callable:
-        replacements, expr = _shared(expr)
-        f = sp.lambdify(self.arguments + list(extra), expr, modules="numpy", dummify=True,
-                        cse=(lambda e: (replacements, e)) if replacements else False)
+        f = vectorized(self.arguments + list(extra), expr)
         return lambda t, states, *more: np.array(np.broadcast_to(
             np.asarray(f(t, *states.T, *self.p, *more), dtype=float), t.shape))
 
@@ -408,19 +407,6 @@ class _Problem:
         replace.update({S.rate(q.name): rates.rate(q.name) for q in system.quasi_coordinates})
         expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
         return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
-
-
-def _shared(expr: sp.Expr) -> tuple[list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
-    """(shared subexpressions, the expression in them) for lambdify, when ``expr`` is large.
-
-    The bicycle's energy is millions of nodes as a tree; lambdify walks and
-    prints the tree, so it is handed the few thousand distinct subexpressions
-    as assignments instead (gacli.graph).
-    """
-    if not is_large(expr):
-        return [], expr
-    replacements, (reduced,) = shared_subexpressions([expr], sp.numbered_symbols("_s"))
-    return replacements, reduced
 
 
 def _arguments(state: Sequence[str], parameters: Sequence[str]) -> list[sp.Symbol]:

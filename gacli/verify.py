@@ -63,7 +63,8 @@ from gacli import symbols as S
 from gacli.errors import DerivationError
 from gacli.graph import substitute
 from gacli.model import Body, Form, System
-from gacli.numeric import sample_parameters
+from gacli.numeric import parameter_values, precise_parameter_values, sample_parameters
+from gacli.numeric.compiled import Compiled
 from gacli.readable import displayable
 
 DEFAULT_SEED = 1410
@@ -191,131 +192,8 @@ def fundamental_equations(system: System) -> FundamentalEquations:
 
 
 # =============================================================================
-# Numerical evaluation (mpmath, 30 digits)
+# Numerical evaluation (mpmath, 30 digits): gacli.numeric's Compiled
 # =============================================================================
-
-_MPMATH_FUNCTIONS = {
-    "sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan, "cot": mpmath.cot,
-    "sec": mpmath.sec, "csc": mpmath.csc, "asin": mpmath.asin, "acos": mpmath.acos,
-    "atan": mpmath.atan, "atan2": mpmath.atan2, "sinh": mpmath.sinh, "cosh": mpmath.cosh,
-    "tanh": mpmath.tanh, "exp": mpmath.exp, "log": mpmath.log, "Abs": mpmath.fabs,
-    "sign": mpmath.sign,
-}
-
-
-class _Program:
-    """Expressions as a straight-line program over their distinct subexpressions.
-
-    Built by one walk of the expression DAG, so its size is the number of
-    distinct nodes, not the size of the printed tree (which is exponential
-    for large derivations: sympy shares subtrees; ``lambdify`` prints them
-    out in full, and ``cse`` on them is slow). Evaluated in mpmath.
-    """
-
-    def __init__(self, exprs: list[sp.Expr]):
-        slots: dict[sp.Basic, int] = {}
-        self.code: list[tuple] = []
-        symbols: set[sp.Symbol] = set()
-        stack: list[tuple[sp.Basic, bool]] = [(e, False) for e in reversed(exprs)]
-        while stack:
-            node, ready = stack.pop()
-            if node in slots:
-                continue
-            if node.args and not ready:
-                stack.append((node, True))
-                stack.extend((a, False) for a in reversed(node.args) if a not in slots)
-                continue
-            if isinstance(node, sp.Symbol):
-                symbols.add(node)
-            slots[node] = len(self.code)
-            self.code.append(self._instruction(node, [slots[a] for a in node.args]))
-        self.outputs = [slots[e] for e in exprs]
-        self.symbols = tuple(sorted(symbols, key=lambda s: s.name))
-
-    @staticmethod
-    def _instruction(node: sp.Basic, args: list[int]) -> tuple:
-        if isinstance(node, sp.Symbol):
-            return ("symbol", node, args)
-        if isinstance(node, sp.Add):
-            return ("add", None, args)
-        if isinstance(node, sp.Mul):
-            return ("mul", None, args)
-        if isinstance(node, sp.Pow):
-            return ("pow", None, args)
-        if node.is_Number or node.is_NumberSymbol:
-            return ("number", node, args)
-        name = type(node).__name__
-        if name in _MPMATH_FUNCTIONS:
-            return ("call", _MPMATH_FUNCTIONS[name], args)
-        raise NotImplementedError(f"cannot evaluate {name} numerically")
-
-    def __call__(self, values: Mapping[sp.Symbol, object]) -> list:
-        out: list = [None] * len(self.code)
-        for i, (kind, payload, args) in enumerate(self.code):
-            if kind == "add":
-                out[i] = mpmath.fsum(out[a] for a in args)
-            elif kind == "mul":
-                out[i] = mpmath.fprod(out[a] for a in args)
-            elif kind == "pow":
-                base, exponent = out[args[0]], self.code[args[1]]
-                if exponent[0] == "number" and exponent[1].is_Integer:
-                    out[i] = base ** int(exponent[1])
-                else:
-                    out[i] = mpmath.power(base, out[args[1]])
-            elif kind == "symbol":
-                out[i] = values[payload]
-            elif kind == "number":
-                out[i] = _number(payload)
-            else:
-                out[i] = payload(*(out[a] for a in args))
-        return [out[o] for o in self.outputs]
-
-
-def _number(node: sp.Basic):
-    if node.is_Rational:
-        return mpmath.mpf(int(node.p)) / int(node.q)
-    if node is sp.S.Pi:
-        return +mpmath.pi
-    if node is sp.S.Exp1:
-        return +mpmath.e
-    if node is sp.S.NaN or node.is_infinite:
-        return mpmath.nan
-    return mpmath.mpf(str(sp.N(node, mpmath.mp.dps + 5)))
-
-
-class _Compiled:
-    """Several symbolic matrices turned into one function of a values dict (mpmath).
-
-    A :class:`_Program` when every function is known to it, else
-    ``lambdify`` to mpmath; values are mpf, evaluated at the working precision.
-    """
-
-    def __init__(self, matrices: Mapping[str, sp.MatrixBase]):
-        self.shapes = {k: (m.rows, m.cols) for k, m in matrices.items()}
-        flat: list[sp.Expr] = []
-        for m in matrices.values():
-            flat.extend(m)
-        try:
-            program = _Program(flat)
-            self.symbols = program.symbols
-            self.function = program
-        except NotImplementedError:
-            self.symbols = tuple(sorted(set().union(*(e.free_symbols for e in flat)), key=lambda s: s.name))
-            compiled = sp.lambdify(self.symbols, flat, modules="mpmath", cse=True)
-            self.function = lambda values: compiled(*(values[s] for s in self.symbols))
-
-    def __call__(self, values: Mapping[sp.Symbol, object]) -> dict[str, mpmath.matrix | None]:
-        missing = [s.name for s in self.symbols if s not in values]
-        if missing:
-            raise KeyError(f"no value for {', '.join(missing)}")
-        flat = list(self.function(values))
-        out, i = {}, 0
-        for key, (r, c) in self.shapes.items():
-            chunk = [mpmath.mpmathify(x) for x in flat[i:i + r * c]]
-            i += r * c
-            out[key] = mpmath.matrix([chunk[a * c:(a + 1) * c] for a in range(r)]) if r * c else None
-        return out
-
 
 def _mp(x) -> mpmath.mpf:
     return mpmath.mpf(x)
@@ -323,20 +201,6 @@ def _mp(x) -> mpmath.mpf:
 
 def _column(m, size: int) -> list:
     return [m[i, 0] for i in range(size)] if size else []
-
-
-def _parameter_values(system: System, rng: np.random.Generator) -> tuple[dict[sp.Symbol, object], str]:
-    """File values (expressions in earlier parameters) where given, else random and physical
-    (:func:`gacli.numeric.sample_parameters`); and what is unphysical about them ("" if nothing)."""
-    sample = sample_parameters(system, rng)
-    values: dict[sp.Symbol, object] = {}
-    for p in system.parameters:
-        if p.value is None:
-            values[S.value(p.name)] = _mp(sample.values[S.value(p.name)])
-        else:
-            exact = {s: sp.Float(str(v), _DPS + 5) for s, v in values.items()}
-            values[S.value(p.name)] = _mp(str(sp.N(p.value.xreplace(exact), _DPS + 5)))
-    return values, sample.problem
 
 
 def _solve(K: mpmath.matrix, b: mpmath.matrix) -> tuple[mpmath.matrix, list[int]]:
@@ -577,8 +441,8 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     rates = derivation.rates
     k = len(independent)
 
-    relations = _Compiled({"A": fundamental.A, "a0": fundamental.a0})
-    ours = _Compiled({
+    relations = Compiled({"A": fundamental.A, "a0": fundamental.a0})
+    ours = Compiled({
         "mass": fundamental.mass, "inertial": fundamental.inertial, "loads": fundamental.loads,
         "A": fundamental.A, "rest": fundamental.relation_rest,
     })
@@ -592,7 +456,7 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     else:
         gradient = sp.zeros(k, 1)
         notes.append(skipped)
-    theirs = _Compiled({
+    theirs = Compiled({
         "M": sp.Matrix(derivation.mass_matrix), "F": sp.Matrix(derivation.forcing),
         "Q": sp.Matrix(derivation.generalized_forces),
         "kin": sp.Matrix([e for _, e in derivation.kinematic_equations]) if derivation.kinematic_equations
@@ -614,7 +478,8 @@ def verify(system: System, derivation, *, samples: int = DEFAULT_SAMPLES, tol: f
     input_symbols = [S.value(i.name) for i in system.inputs]
     with mpmath.workdps(_DPS):
         for sample in range(samples):
-            values, unphysical = _parameter_values(system, rng)
+            sample_drawn = sample_parameters(system, rng)
+            values, unphysical = precise_parameter_values(system, sample_drawn, _DPS + 5), sample_drawn.problem
             bad_sample = bad_sample or unphysical
             values.update({S.value(c): _mp(rng.uniform(0.3, 1.7)) for c in coords})
             values.update({s: _mp(rng.uniform(-1.5, 1.5)) for s in function_symbols + input_symbols})
@@ -772,7 +637,7 @@ def multipliers_numeric(system: System, values: Mapping[sp.Symbol, object]) -> t
     """
     fundamental = fundamental_equations(system)
     N, m = len(fundamental.names), len(fundamental.relations)
-    compiled = _Compiled({
+    compiled = Compiled({
         "mass": fundamental.mass, "inertial": fundamental.inertial, "loads": fundamental.loads,
         "A": fundamental.A, "rest": fundamental.relation_rest,
     })
@@ -916,15 +781,9 @@ def reaction_function(derivation) -> Callable[[Mapping], np.ndarray]:
     """
     system = derivation.system
     lam = constraint_forces(derivation, solved=False, simplify=False)
-    compiled = _Compiled({"M": sp.Matrix(derivation.mass_matrix), "F": sp.Matrix(derivation.forcing)})
-    lam_f = _Compiled({"lam": sp.Matrix(lam)})
-    defaults: dict[sp.Symbol, float] = {}
-    for p in system.parameters:
-        if p.value is not None:
-            try:
-                defaults[S.value(p.name)] = float(p.value.xreplace(defaults))
-            except TypeError:
-                pass  # in a parameter without a value: must be given
+    compiled = Compiled({"M": sp.Matrix(derivation.mass_matrix), "F": sp.Matrix(derivation.forcing)})
+    lam_f = Compiled({"lam": sp.Matrix(lam)})
+    defaults, _ = parameter_values(system)  # those without a value (or in one) must be given
     speed_rates = derivation.speed_rates
 
     def evaluate(values: Mapping) -> np.ndarray:
