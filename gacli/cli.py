@@ -219,7 +219,8 @@ def check(
     with _boundary():
         try:
             if format == "text":
-                from gacli import check_console, console
+                from gacli import console
+                from gacli.check import console as check_console
 
                 with console.progress("checking") as step:
                     report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,

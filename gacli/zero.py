@@ -1,8 +1,8 @@
 """Is an expression identically zero? simplify() while it is small, else seeded random points.
 
 Used by the loader (:func:`vanishes`) and by ``gacli check``
-(:func:`decide_zero`, in :mod:`gacli.integrability` and
-:mod:`gacli.check`); the points and the bounded evaluator are
+(:func:`decide_zero`, in :mod:`gacli.check.integrability` and
+:mod:`gacli.check.mass`); the points and the bounded evaluator are
 :mod:`gacli.numeric`'s. Also the SIGALRM time limit every step uses.
 """
 
