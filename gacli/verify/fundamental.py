@@ -16,6 +16,7 @@ import sympy as sp
 
 from gacli import symbols as S
 from gacli.model import Form, System
+from gacli.numeric.compiled import Compiled
 
 DEFAULT_SEED = 1410
 DPS = 30                  # working precision of the numerical check
@@ -192,8 +193,9 @@ def redundant_relations(fundamental: FundamentalEquations, seed: int = DEFAULT_S
     rng = np.random.default_rng(seed)
     symbols = sorted(A.free_symbols, key=lambda s: s.name)
     with mpmath.workdps(DPS):
-        point = {s: sp.Float(rng.uniform(0.4, 1.6), DPS) for s in symbols}
-        numeric = [[mpmath.mpf(str(sp.N(e.xreplace(point), DPS))) for e in A.row(i)] for i in range(A.rows)]
+        point = {s: mpmath.mpf(rng.uniform(0.4, 1.6)) for s in symbols}
+        values = Compiled({"A": A})(point)["A"]
+        numeric = [[values[i, j] for j in range(A.cols)] for i in range(A.rows)]
         kept: list[list] = []
         redundant = []
         for i, row in enumerate(numeric):
