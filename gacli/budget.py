@@ -15,7 +15,7 @@ import traceback
 from collections.abc import Iterator
 
 from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
-from gacli.integrability import time_limit
+from gacli.zero import time_limit
 
 DEFAULT_TIMEOUT = 300.0
 TIMEOUT_HELP = "Seconds allowed for the whole command (0: no limit)."

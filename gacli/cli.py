@@ -219,7 +219,8 @@ def check(
     with _boundary():
         try:
             if format == "text":
-                from gacli import check_console, console
+                from gacli import console
+                from gacli.check import console as check_console
 
                 with console.progress("checking") as step:
                     report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
@@ -278,7 +279,7 @@ def simulate(
     residual of each constraint along the path; writes a CSV or a plot.
     """
     from gacli import simulate as sim
-    from gacli import simulate_console
+    from gacli.simulate import console as simulate_console
 
     with _boundary():
         spec = sim.spec_from_options(set=set_ or (), init=init or (), input=input or (), function=function or (),
@@ -286,7 +287,7 @@ def simulate(
                                      rtol=rtol, atol=atol, points=points)
         sim.require("scipy.integrate")
         if plot is not None:
-            from gacli.simulate_plot import check
+            from gacli.simulate.plot import check
 
             check(plot)
         with _budget(file, timeout) as state:
@@ -300,7 +301,7 @@ def simulate(
             for path in write_files({csv.name: sim.to_csv(result)}, csv):
                 simulate_console.wrote(path)
         if plot is not None:
-            from gacli.simulate_plot import plot as draw
+            from gacli.simulate.plot import plot as draw
 
             simulate_console.wrote(draw(result, plot, spec.show, spec.phase))
         simulate_console.summary(result)

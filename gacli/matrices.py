@@ -6,7 +6,6 @@ them (the rates, the motions, the forces and the equations all use them).
 
 from __future__ import annotations
 
-import random
 from collections.abc import Sequence
 
 import numpy as np
@@ -14,20 +13,11 @@ import sympy as sp
 
 from gacli import trig
 
-# Ranks are decided at a random configuration: a generic rank of a matrix of
-# functions equals its rank at almost every point. Fixed seed: same answer
-# every run.
-SEED = 20261122
+# Ranks are decided at a random configuration (gacli.numeric.samples): a
+# generic rank of a matrix of functions equals its rank at almost every point.
 _RANK_TOL = 1e-9
 
 _ZERO = sp.S.Zero
-
-
-def random_point(symbols, seed: int = SEED) -> dict[sp.Symbol, sp.Float]:
-    """Deterministic generic values in [0.4, 1.6] for the given symbols."""
-    rng = random.Random(seed)
-    ordered = sorted(symbols, key=lambda s: s.name)
-    return {s: sp.Float(rng.uniform(0.4, 1.6)) for s in ordered}
 
 
 def rank(matrix: np.ndarray) -> int:

@@ -20,8 +20,9 @@ from gacli import nonlinear as NL
 from gacli import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
 from gacli.graph import is_small
-from gacli.matrices import SEED, nonzero, random_point, rank, solve_linear
+from gacli.matrices import nonzero, rank, solve_linear
 from gacli.model import Form, System
+from gacli.numeric.samples import SEED, random_point
 
 
 @dataclass(frozen=True)

@@ -134,7 +134,7 @@ def _side(expr) -> str:
 
 def reactions_report(d: Derivation) -> tuple[Section, ...]:
     """The constraint forces λ (gacli.verify), one per constraint, in the state."""
-    from gacli.verify import constraint_forces
+    from gacli.reactions import constraint_forces
 
     title = "Constraint forces (multipliers of eq. 14.1, see docs/verify.md)"
     if not displayable(d):

@@ -13,7 +13,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
-from gacli.integrability import UndefinedValue, evaluate, sample_points
+from gacli.numeric import UndefinedValue, evaluate, sample_points
 
 
 NOT_POSITIVE = "the radius must be positive: with a radius of 0 or less there is no contact point below the centre"

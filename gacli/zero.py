@@ -1,14 +1,14 @@
 """Is an expression identically zero? simplify() while it is small, else seeded random points.
 
-Split out of :mod:`gacli.integrability` (which re-exports these names) so
-that the exterior calculus of :mod:`gacli.exterior` and the classification
-can both use it. Also the SIGALRM time limit every step uses.
+Used by the loader (:func:`vanishes`) and by ``gacli check``
+(:func:`decide_zero`, in :mod:`gacli.check.integrability` and
+:mod:`gacli.check.mass`); the points and the bounded evaluator are
+:mod:`gacli.numeric`'s. Also the SIGALRM time limit every step uses.
 """
 
 from __future__ import annotations
 
 import contextlib
-import random
 import signal
 import threading
 import time
@@ -20,14 +20,16 @@ import sympy as sp
 from gacli.coerce import as_expr
 from gacli.errors import GacliError
 from gacli.graph import is_small
-from gacli.evaluate import _RELATIVE_TOLERANCE, UndefinedValue, evaluate
+from gacli.numeric.guarded import RELATIVE_TOLERANCE as _RELATIVE_TOLERANCE
+from gacli.numeric.guarded import UndefinedValue, evaluate
+from gacli.numeric.samples import SEED as _SEED
+from gacli.numeric.samples import random_point, sample_points
 
 # simplify() is tried only below this many operations and for at most this
 # long: it can take minutes even on small expressions (Piecewise, huge
 # integers), and random points decide faster.
 SIMPLIFY_MAX_OPS = 120
 SIMPLIFY_SECONDS = 1.0
-_SEED = 20261122
 _POINTS = 10
 _MIN_VALID_POINTS = 3
 
@@ -140,20 +142,6 @@ def _numeric_zero(expr: sp.Expr, seed: int) -> Decision:
     return Decision(True, "numeric") if valid >= _MIN_VALID_POINTS else Decision(None, "undecided")
 
 
-def sample_points(symbols, count: int, seed: int = _SEED, signed: bool = False) -> list[dict[sp.Symbol, float]]:
-    """``count`` deterministic generic points: values in [0.3, 1.7] (either sign when ``signed``)."""
-    rng = random.Random(seed)
-    ordered = sorted(symbols, key=lambda s: s.name)
-    points = []
-    for _ in range(count):
-        point = {}
-        for s in ordered:
-            value = rng.uniform(0.3, 1.7)
-            point[s] = -value if signed and rng.random() < 0.5 else value
-        points.append(point)
-    return points
-
-
 def vanishes(expr: sp.Expr, simplify: bool = True) -> bool:
     """Zero exactly when cheap to see, else at three generic points (never hangs on a huge tree).
 
@@ -174,8 +162,6 @@ def vanishes(expr: sp.Expr, simplify: bool = True) -> bool:
                 return sp.simplify(expr) == 0
         except (ArithmeticError, ValueError, TypeError, RecursionError):
             return False
-    from gacli.matrices import random_point
-
     for seed in (1, 2, 3):
         try:
             value = complex(expr.xreplace(random_point(expr.free_symbols, seed)).evalf(20))

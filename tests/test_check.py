@@ -19,8 +19,9 @@ from typer.testing import CliRunner
 
 from gacli.check import (
     STEP_CLASSIFY, STEP_LOAD, STEP_MASS, STEP_READ, CheckReport, FileReport, PathsError,
-    check_file, check_paths, expand_paths, printable, to_github, to_json,
+    check_file, check_paths, expand_paths, to_github, to_json,
 )
+from gacli.read.textsafe import printable
 from gacli.cli import app
 from gacli.equations import derive
 from gacli.errors import Diagnostic, Location
@@ -283,7 +284,7 @@ def test_a_crash_is_reported_as_an_internal_error(tmp_path, monkeypatch):
     def broken(*args, **kwargs):
         raise ZeroDivisionError("boom")
 
-    monkeypatch.setattr("gacli.check.derive", broken)
+    monkeypatch.setattr("gacli.check.run.derive", broken)
     result = invoke(str(write(tmp_path, "good.yaml", GOOD)))
     assert result.exit_code == 1
     assert "good.yaml:1:1: error: internal error in the step" in result.stderr

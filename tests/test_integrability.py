@@ -10,9 +10,9 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli.integrability import (
-    SIMPLIFY_MAX_OPS, Decision, UndefinedValue, classify, decide_zero, evaluate, time_limit,
-)
+from gacli.check.integrability import classify
+from gacli.numeric import UndefinedValue, evaluate
+from gacli.zero import SIMPLIFY_MAX_OPS, Decision, decide_zero, time_limit
 from gacli.loading import load, loads
 
 from conftest import SYSTEMS
@@ -249,7 +249,7 @@ def wedge(a, b):
 
 @pytest.mark.parametrize("inertial, sign", [(False, -1), (True, 1)])
 def test_maurer_cartan_sign_from_euler_angles(inertial, sign):
-    """dΩ_1 = −Ω_2 ∧ Ω_3 (cyclic) along body axes, and + along inertial ones: gacli/exterior.py's σ."""
+    """dΩ_1 = −Ω_2 ∧ Ω_3 (cyclic) along body axes, and + along inertial ones: gacli/check/exterior.py's σ."""
     w = angular_forms(inertial)
     for i in range(3):
         left, right = d_form(w[i]), wedge(w[(i + 1) % 3], w[(i + 2) % 3])
@@ -400,7 +400,7 @@ bodies: {p: {mass: m, position: [x, y, z + w]}}
 
 
 def test_the_set_test_by_points_agrees_with_the_symbolic_one(monkeypatch):
-    import gacli.integrability as integrability
+    import gacli.check.integrability as integrability
     monkeypatch.setattr(integrability, "_kernel", lambda rows: None)
     assert [c.verdict for c in classify(system(["dz = x*dy", "dx = 0"]))] == ["holonomic", "holonomic"]
     assert [c.verdict for c in classify(euler_system(inertial=False))] == ["holonomic"] * 3

@@ -45,7 +45,7 @@ def report():
 
 
 def render(report, width: int) -> str:
-    from gacli.check_console import _table
+    from gacli.check.console import _table
 
     console = Console(width=width, record=True, color_system=None)
     console.print(_table(report, console.width))

@@ -143,7 +143,7 @@ def test_a_nonlinear_rate_may_not_be_independent_or_in_a_pfaffian_row():
 
 
 def test_check_reports_a_nonlinear_constraint_as_such():
-    from gacli.integrability import classify
+    from gacli.check.integrability import classify
 
     (verdict,) = classify(load(SYSTEMS / "appell_hamel.yaml"))
     assert verdict.verdict.startswith("nonlinear")

@@ -14,7 +14,7 @@ from gacli.emit.c import emit_c
 from gacli.emit.naming import layout
 from gacli.emit.python import emit_python
 from gacli import symbols as S
-from gacli.verify import constraint_forces, multipliers_numeric, reaction_system
+from gacli.reactions import constraint_forces, multipliers_numeric, reaction_system
 
 CASES = ["sphere_on_turntable", "chaplygin_sleigh", "cylinder_in_cylinder"]
 

@@ -212,7 +212,7 @@ def test_summary_and_progress():
 
 
 def test_console_is_quiet_when_piped(capsys):
-    from gacli import simulate_console
+    from gacli.simulate import console as simulate_console
 
     with simulate_console.progress(1.0) as advance:
         assert advance is None
@@ -230,7 +230,7 @@ def test_the_generated_module_is_not_left_behind():
 @pytest.mark.parametrize("suffix", [".png", ".svg"])
 def test_plot_file_is_written(tmp_path, suffix):
     pytest.importorskip("matplotlib")
-    from gacli.simulate_plot import plot
+    from gacli.simulate.plot import plot
 
     sim = sphere("2", t_end=2.0, points=101)
     target = tmp_path / "out" / f"sphere{suffix}"
@@ -242,7 +242,7 @@ def test_plot_file_is_written(tmp_path, suffix):
 
 
 def test_plot_refuses_other_formats(tmp_path):
-    from gacli.simulate_plot import check
+    from gacli.simulate.plot import check
 
     with pytest.raises(SimulationError, match=r"\.png or \.svg"):
         check(tmp_path / "plot.pdf")
@@ -255,7 +255,7 @@ def test_without_the_extra_the_error_says_what_to_install(monkeypatch, tmp_path)
         run("cylinder_in_cylinder", t_end=0.1)
     assert isinstance(caught.value, GacliError) and "scipy" in str(caught.value)
     monkeypatch.setitem(sys.modules, "matplotlib", None)
-    from gacli.simulate_plot import check
+    from gacli.simulate.plot import check
 
     with pytest.raises(MissingExtraError, match=r"plotting needs matplotlib.*pip install 'gacli\[sim\]'"):
         check(tmp_path / "plot.png")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from conftest import ROOT
-from gacli import source
+from gacli.read import source
 from gacli.errors import SystemFileError
 
 YAML_FILES = sorted(

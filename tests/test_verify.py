@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import dataclasses
+import importlib
 import inspect
 
 import numpy as np
@@ -12,8 +13,10 @@ import sympy as sp
 from conftest import SYSTEMS, derived
 
 from gacli import symbols as S
+from gacli import reactions as R
 from gacli import verify as V
 from gacli.loading import loads
+from gacli.numeric.compiled import Compiled
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 
@@ -46,7 +49,18 @@ def test_deterministic_and_seeded():
 
 def test_independent_route_imports_none_of_the_checked_code():
     """gacli.verify imports gacli.symbols and gacli.model only: none of the derivation's code."""
-    tree = ast.parse(inspect.getsource(V))
+    import pkgutil
+
+    modules = [V] + [importlib.import_module(f"gacli.verify.{m.name}") for m in pkgutil.iter_modules(V.__path__)]
+    assert len(modules) > 1
+    for module in modules:
+        _imports_none_of_the_checked_code(module)
+    source = inspect.getsource(V.fundamental_equations)
+    assert "derivation" not in source and "beta" not in source
+
+
+def _imports_none_of_the_checked_code(module):
+    tree = ast.parse(inspect.getsource(module))
     checked = {"gacli.rates", "gacli.motions", "gacli.forces", "gacli.equations", "gacli.gibbs"}
     for node in tree.body:
         if isinstance(node, ast.ImportFrom) and node.module:
@@ -57,8 +71,6 @@ def test_independent_route_imports_none_of_the_checked_code():
     modules = {n.module for n in inner if isinstance(n, ast.ImportFrom)}
     modules |= {a.name for n in inner if isinstance(n, ast.Import) for a in n.names}
     assert not modules & checked
-    source = inspect.getsource(V.fundamental_equations)
-    assert "derivation" not in source and "beta" not in source
 
 
 # -- broken derivations fail, naming the equation --------------------------
@@ -277,21 +289,21 @@ bodies: {ball: {mass: m, position: [x, 0, 0]}}
 
 def test_cylinder_friction_force():
     """λ of a dφ − c dθ = 0 is the friction force: I φ̈ = λ a gives −M g sin θ / 3."""
-    lam = V.constraint_forces(derived("cylinder_in_cylinder"))
+    lam = R.constraint_forces(derived("cylinder_in_cylinder"))
     M, g, theta = (S.value(n) for n in ("M", "g", "theta"))
     assert lam.shape == (1, 1)
     assert sp.simplify(lam[0] + M * g * sp.sin(theta) / 3) == 0
 
 
 def test_no_constraints_no_reactions():
-    assert V.constraint_forces(derived("rigid_body")).shape == (0, 1)
-    assert V.reactions_numeric(derived("spinning_top"), {}).shape == (0,)
+    assert R.constraint_forces(derived("rigid_body")).shape == (0, 1)
+    assert R.reactions_numeric(derived("spinning_top"), {}).shape == (0,)
 
 
 def test_turntable_reactions_symbolic():
     """λ = (M ẍ − F_x, M ÿ − F_y) with ẍ, ÿ from eq. (14.29)."""
     d = derived("sphere_on_turntable")
-    lam = V.constraint_forces(d)
+    lam = R.constraint_forces(d)
     udot = sp.Matrix(d.mass_matrix).LUsolve(sp.Matrix(d.forcing))
     xdd, ydd = udot[d.independent.index("x")], udot[d.independent.index("y")]
     M = S.value("M")
@@ -305,7 +317,7 @@ def test_turntable_reactions_symbolic():
     values[S.rate("q_y")] = (values[S.rate("x")] + values[S.value("Omega")] * values[S.value("y")]) / values[S.value("a")]
     values[S.rate("q_x")] = (values[S.value("Omega")] * values[S.value("x")] - values[S.rate("y")]) / values[S.value("a")]
     values[S.value("I")] = 0.4 * values[S.value("M")] * values[S.value("a")] ** 2
-    _, multipliers = V.multipliers_numeric(d.system, values)
+    _, multipliers = R.multipliers_numeric(d.system, values)
     expected = [float(e.xreplace(values)) for e in lam]
     assert np.allclose(multipliers, expected, rtol=1e-12, atol=0)
 
@@ -346,7 +358,7 @@ def test_turntable_contact_forces_along_a_trajectory():
     y0 = [0.3, -0.2, 0.1, 0.2, 1.0]
     sol = solve_ivp(rhs, (0.0, 3.0), y0, rtol=1e-11, atol=1e-12, dense_output=True)
     assert sol.success
-    reactions = V.reaction_function(d)
+    reactions = R.reaction_function(d)
     ix, iy = nq + d.independent.index("x"), nq + d.independent.index("y")
     h = 1e-4
     for t in np.linspace(0.2, 2.8, 9):
@@ -377,17 +389,17 @@ def test_reactions_agree_with_the_multipliers_of_the_fundamental_equation():
     symbols |= set().union(*(e.free_symbols for e in list(d.mass_matrix) + list(d.forcing) + list(d.beta0)))
     dependent = [n for n in d.rates.names if n not in d.independent]
     rng = np.random.default_rng(11)
-    reactions = V.reaction_function(d)
+    reactions = R.reaction_function(d)
     for _ in range(3):
         values = {s: float(rng.uniform(0.3, 1.7)) for s in sorted(symbols, key=lambda s: s.name)}
         values.update({S.value(p.name): float(p.value) for p in d.system.parameters if p.value is not None})
         for n in dependent:
             values[S.rate(n)] = float(d.rates.rate(n).xreplace(values))
-        _, multipliers = V.multipliers_numeric(d.system, values)
+        _, multipliers = R.multipliers_numeric(d.system, values)
         lam = reactions(values)
         assert lam.shape == (1,)
         assert np.allclose(lam, multipliers[:1], rtol=1e-9, atol=1e-12)
-        symbolic = V.constraint_forces(d, simplify=False)
+        symbolic = R.constraint_forces(d, simplify=False)
         assert float(symbolic[0].xreplace(values)) == pytest.approx(multipliers[0], rel=1e-9)
 
 
@@ -407,12 +419,12 @@ def test_numeric_program_matches_sympy():
              sp.log(x) + sp.sign(y) + sp.tanh(x) * sp.Rational(3, 7) + sp.acos(x / 2) + x ** sp.Rational(-3, 2)]
     with mpmath.workdps(30):
         values = {x: mpmath.mpf("0.7"), y: mpmath.mpf("-1.3")}
-        got = V._Compiled({"e": sp.Matrix(exprs)})(values)["e"]
+        got = Compiled({"e": sp.Matrix(exprs)})(values)["e"]
         exact = [e.xreplace({x: sp.Rational(7, 10), y: sp.Rational(-13, 10)}).evalf(40) for e in exprs]
         for i, e in enumerate(exact):
             assert abs(got[i] - mpmath.mpf(str(e))) < mpmath.mpf("1e-27")
     # an unknown function falls back to lambdify
-    compiled = V._Compiled({"e": sp.Matrix([sp.Piecewise((x, x > 0), (0, True))])})
+    compiled = Compiled({"e": sp.Matrix([sp.Piecewise((x, x > 0), (0, True))])})
     with mpmath.workdps(30):
         assert compiled(values)["e"][0] == mpmath.mpf("0.7")
 

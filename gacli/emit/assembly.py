@@ -109,7 +109,7 @@ def mass_matrix_entries(derivation: Derivation, lower: bool = False) -> list[tup
 
 def reaction_equations(derivation: Derivation) -> list[tuple[str, sp.Expr]]:
     """The multipliers λ of the constraints (docs/verify.md), in the state, one per constraint."""
-    from gacli.verify import constraint_forces
+    from gacli.reactions import constraint_forces
 
     forces = constraint_forces(derivation, simplify=False)
     return [(f"lambda[{i}]", forces[i]) for i in range(len(forces))]
@@ -135,7 +135,7 @@ class ReactionSolve:
 def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
     """How generated code finds λ numerically; None when :func:`reaction_equations` gives it in closed form."""
     from gacli.readable import displayable
-    from gacli.verify import reaction_system
+    from gacli.reactions import reaction_system
 
     if displayable(derivation):
         return None

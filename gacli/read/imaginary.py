@@ -25,8 +25,7 @@ from collections.abc import Mapping
 import sympy as sp
 
 from gacli.graph import postorder
-from gacli.integrability import sample_points
-from gacli.numeric import Program
+from gacli.numeric import Program, sample_points
 
 SAMPLES = 3          # unsigned points, and as many of either sign
 # Each point also scaled: sqrt(l**2 - x**2) with l = 0.1 is real only for small x,

@@ -17,7 +17,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from gacli.simulate import Simulation, SimulationError, require
+from gacli.simulate.results import Simulation
+from gacli.simulate.spec import SimulationError, require
 
 FORMATS = (".png", ".svg")
 

@@ -1,102 +1,52 @@
-"""Evaluate SymPy expressions as a straight-line program over their distinct subexpressions.
+"""Parameters as numbers: the file's values, and physical random samples of the others.
 
-Derived expressions share their subexpressions (a solved rate appears in
-every velocity), so as printed trees they can be millions of nodes while the
-distinct subexpressions stay few. ``lambdify`` prints the trees and
-``xreplace`` rebuilds them; a :class:`Program` is built by one walk of the
-distinct nodes and then evaluated as often as needed, in complex arithmetic
-(the complex step of :mod:`gacli.linearize` needs it).
+Every tool that needs numbers for the parameters takes them here: ``gacli
+check`` (:func:`parameter_values`), ``gacli verify`` and the reactions
+(:func:`sample_parameters`, :func:`precise_parameter_values`).
 """
 
 from __future__ import annotations
 
-import cmath
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 
+import mpmath
 import numpy as np
 import sympy as sp
 
 from gacli import symbols as S
+from gacli.numeric.evaluator import Program
+from gacli.numeric.guarded import UndefinedValue, evaluate
 
 
-_FUNCTIONS = {
-    sp.sin: cmath.sin, sp.cos: cmath.cos, sp.tan: cmath.tan, sp.asin: cmath.asin, sp.acos: cmath.acos,
-    sp.atan: cmath.atan, sp.sinh: cmath.sinh, sp.cosh: cmath.cosh, sp.tanh: cmath.tanh,
-    sp.exp: cmath.exp, sp.log: cmath.log,
-}
+def parameter_values(system) -> tuple[dict[sp.Symbol, float], list[str]]:
+    """Numeric values of the parameters (values may name earlier ones) and the names without one.
+
+    By the guarded evaluator: a value too large to be a number is no value.
+    """
+    values: dict[sp.Symbol, float] = {}
+    missing = []
+    for p in system.parameters:
+        if p.value is None:
+            missing.append(p.name)
+            continue
+        try:
+            values[S.value(p.name)] = float(evaluate(p.value, values)[0])
+        except UndefinedValue:
+            missing.append(p.name)
+    return values, missing
 
 
-class Program:
-    """The expressions compiled once; ``program(values)`` gives their complex values."""
-
-    def __init__(self, exprs: Sequence[sp.Basic]) -> None:
-        slots: dict[sp.Basic, int] = {}
-        self.code: list[tuple] = []
-        stack = [(e, False) for e in reversed(list(exprs))]
-        while stack:
-            node, ready = stack.pop()
-            if node in slots:
-                continue
-            if node.args and not node.is_Number and not ready:
-                stack.append((node, True))
-                stack.extend((a, False) for a in reversed(node.args) if a not in slots)
-                continue
-            slots[node] = len(self.code)
-            self.code.append(_instruction(node, [slots[a] for a in node.args] if node.args else []))
-        self.outputs = [slots[e] for e in exprs]
-
-    def __call__(self, values: Mapping[sp.Symbol, complex]) -> list[complex]:
-        out: list = [0j] * len(self.code)
-        for i, (kind, payload, args) in enumerate(self.code):
-            if kind == "add":
-                out[i] = sum(out[a] for a in args)
-            elif kind == "mul":
-                value = 1
-                for a in args:
-                    value *= out[a]
-                out[i] = value
-            elif kind == "ipow":
-                out[i] = out[args[0]] ** payload
-            elif kind == "sqrt":
-                out[i] = cmath.sqrt(out[args[0]])
-            elif kind == "pow":
-                out[i] = out[args[0]] ** out[args[1]]
-            elif kind == "symbol":
-                out[i] = complex(values[payload])
-            elif kind == "number":
-                out[i] = payload
-            else:
-                out[i] = payload(*(out[a] for a in args))
-        return [out[o] for o in self.outputs]
-
-
-def _instruction(node: sp.Basic, args: list[int]) -> tuple:
-    if node.is_Symbol:
-        return ("symbol", node, args)
-    if node.is_Number or node.is_NumberSymbol:
-        return ("number", complex(node), args)
-    if node.is_Add:
-        return ("add", None, args)
-    if node.is_Mul:
-        return ("mul", None, args)
-    if node.is_Pow:
-        if node.exp.is_Integer:
-            return ("ipow", int(node.exp), args)
-        if node.exp == sp.S.Half:
-            return ("sqrt", None, args)
-        return ("pow", None, args)
-    if node.func in _FUNCTIONS:
-        return ("call", _FUNCTIONS[node.func], args)
-    if node.func is sp.atan2:
-        return ("call", _atan2, args)
-    raise TypeError(f"cannot evaluate {node.func.__name__} numerically")
-
-
-def _atan2(y: complex, x: complex) -> complex:
-    """atan2 with the first-order complex part, so that the complex step sees its derivative."""
-    real = cmath.phase(complex(x.real, y.real))
-    return complex(real, (x.real * y.imag - y.real * x.imag) / (x.real ** 2 + y.real ** 2))
+def precise_parameter_values(system, sample: "ParameterSample", digits: int) -> dict[sp.Symbol, mpmath.mpf]:
+    """The file's values at ``digits`` digits (expressions in earlier parameters), the sample's elsewhere."""
+    values: dict[sp.Symbol, mpmath.mpf] = {}
+    for p in system.parameters:
+        if p.value is None:
+            values[S.value(p.name)] = mpmath.mpf(sample.values[S.value(p.name)])
+        else:
+            exact = {s: sp.Float(str(v), digits) for s, v in values.items()}
+            values[S.value(p.name)] = mpmath.mpf(str(sp.N(p.value.xreplace(exact), digits)))
+    return values
 
 
 # -- physical samples of the parameters -------------------------------------------

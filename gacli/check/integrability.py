@@ -4,7 +4,7 @@ A Pfaffian form ω = Σ a_i dx_i runs over the differentials of the
 coordinates, of the quasi-coordinates and of t (time is one more variable);
 its coefficients are functions of the coordinates and t (parameters and the
 free functions of time ride along: a free function Omega has dOmega/dt =
-dot(Omega)). Its exterior derivative dω is computed by :mod:`gacli.exterior`:
+dot(Omega)). Its exterior derivative dω is computed by :mod:`gacli.check.exterior`:
 a quasi-coordinate given by a differential is replaced by it, and a
 primitive one is a component of a body's rotation, whose d follows from the
 Maurer-Cartan equations of the rotation group (d(dq_x) is not zero for a
@@ -50,12 +50,12 @@ import sympy as sp
 
 from gacli.coerce import as_expr
 from gacli.errors import GacliError, Location
-from gacli.evaluate import _DIGITS, _RELATIVE_TOLERANCE, UndefinedValue, evaluate
-from gacli.exterior import Calculus, OneForm, Structure, structures
+from gacli.check.exterior import Calculus, OneForm, Structure, structures
 from gacli.model import Form, System
-from gacli.zero import (  # noqa: F401 - re-exported
-    _MIN_VALID_POINTS, _SEED, SIMPLIFY_MAX_OPS, Decision, decide_zero, sample_points, time_limit,
-)
+from gacli.numeric import UndefinedValue, evaluate, sample_points
+from gacli.numeric.guarded import DIGITS as _DIGITS
+from gacli.numeric.guarded import RELATIVE_TOLERANCE as _RELATIVE_TOLERANCE
+from gacli.zero import _MIN_VALID_POINTS, _SEED, Decision, decide_zero, time_limit
 
 # The set's test needs a basis of the constraints' kernel; sympy's rref can
 # take minutes on the bicycle's rows, and seeded points decide as well.
@@ -188,7 +188,7 @@ class _Exterior:
     """One form ω = Σ a_i dx_i and its exterior derivative dω = Σ_{i<j} c_ij dx_i ∧ dx_j.
 
     c_ij = ∂_i a_j − ∂_j a_i, plus a_π times the components of dπ for each
-    primitive quasi-coordinate π (its structure, :mod:`gacli.exterior`).
+    primitive quasi-coordinate π (its structure, :mod:`gacli.check.exterior`).
     """
 
     def __init__(self, a: OneForm, calculus: Calculus, structure: Structure) -> None:

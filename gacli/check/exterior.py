@@ -20,7 +20,7 @@ gives dπ = P⁻¹ (σ ρ×ρ − dA − dP ∧ dπ), when the three components 
 one nonzero component, whose right side is zero: dπ = −(dA + dp ∧ dπ)/p.
 The file's axes are body axes (σ = −1), except that a body with equal
 principal moments may give inertial components: both signs are tried and
-:mod:`gacli.integrability` keeps a verdict only when they agree.
+:mod:`gacli.check.integrability` keeps a verdict only when they agree.
 
 Anything else (a primitive in no rotation, in several, or in a rotation of
 another shape) has no known structure: a form that involves it is

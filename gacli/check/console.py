@@ -13,7 +13,7 @@ from rich.table import Table
 from rich.text import Text
 
 from gacli import console
-from gacli.check import CheckReport, FileReport
+from gacli.check.report import CheckReport, FileReport
 from gacli.console import printable
 from gacli.report import rank_note
 

@@ -14,7 +14,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from gacli.console import printable, stderr, stdout
-from gacli.simulate import Simulation, summary_lines
+from gacli.simulate.results import Simulation, summary_lines
 
 
 @contextlib.contextmanager

@@ -1,0 +1,74 @@
+"""Declarations nothing uses: warnings (parameters, coordinates) and notes (inputs)."""
+
+from __future__ import annotations
+
+from gacli import symbols as S
+from gacli.errors import Diagnostic, Location
+from gacli.graph import free_symbols
+from gacli.model import System
+
+
+def unused_declarations(system: System) -> list[Diagnostic]:
+    """Warnings (unused parameters, coordinates no body depends on) and notes (unused inputs).
+
+    An input is the generated code's interface as much as the model's: a file
+    may declare a whole force vector (F_x, F_y, F_z) of which a constraint
+    makes one component do no work, and ``--strict`` in CI must not fail it
+    for that. So an unused input is a note: shown, but never failing.
+    """
+    used = _symbols_used(system)
+    loads = [e for f in system.forces for e in f.vector] + [e for t in system.torques for e in t.vector]
+    loaded = _form_symbols(system.work) | free_symbols(loads)
+    bodies = _body_dependencies(system)
+    out = []
+    for p in system.parameters:
+        if S.value(p.name) not in used:
+            out.append(_warning(p.location, f"parameters.{p.name}", f"parameter '{p.name}' is not used"))
+    for i in system.inputs:
+        if S.value(i.name) not in loaded:
+            out.append(Diagnostic(i.location, f"input '{i.name}' is declared but no load uses it "
+                                  "(it stays an input of the generated code, with no effect)",
+                                  f"inputs.{i.name}", severity="note"))
+    for c in system.coordinates:
+        if c.name not in bodies:
+            out.append(_warning(c.location, f"coordinates.{c.name}",
+                                f"no body depends on coordinate '{c.name}' (it is in no position or rotation)"))
+    return out
+
+
+def _warning(location: Location, where: str, message: str) -> Diagnostic:
+    return Diagnostic(location, message, where, severity="warning")
+
+
+def _form_symbols(form) -> set:
+    if form is None:
+        return set()
+    return free_symbols([form.dt, *(c for _, c in form.coefficients)])
+
+
+def _symbols_used(system: System) -> set:
+    """Every symbol in an expression of the system, parameter and function values included."""
+    exprs: list = [p.value for p in system.parameters] + [f.value for f in system.functions]
+    for body in system.bodies:
+        exprs += [body.mass, *body.position]
+        exprs += list(body.inertia) if body.inertia is not None else []
+    exprs += [e for f in system.forces for e in (*f.vector, *f.point)]
+    exprs += [e for t in system.torques for e in t.vector] + [system.potential]
+    exprs += [c.relation for c in system.constraints]
+    used = free_symbols([e for e in exprs if e is not None])
+    forms = [c.form for c in system.constraints] + [q.differential for q in system.quasi_coordinates]
+    forms += [f for b in system.bodies if b.rotation for f in b.rotation] + [system.work]
+    return used.union(*(_form_symbols(f) for f in forms))
+
+
+def _body_dependencies(system: System) -> set[str]:
+    """Names of the coordinates in a position or in a rotation (as a value or a differential)."""
+    names: set[str] = set()
+    coordinates = {S.value(c.name): c.name for c in system.coordinates}
+    for body in system.bodies:
+        symbols = free_symbols(body.position)
+        for form in body.rotation or ():
+            symbols |= _form_symbols(form)
+            names.update(form.names)
+        names.update(coordinates[s] for s in symbols if s in coordinates)
+    return names

@@ -1,0 +1,90 @@
+"""The checks of M: defined, real, symmetric, and positive definite at seeded sample states."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from gacli.check.report import MassMatrixCheck
+from gacli.equations import Derivation
+from gacli.errors import Location
+from gacli.graph import free_symbols, postorder
+from gacli.model import System
+from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
+from gacli.zero import decide_zero
+
+PD_SAMPLES = 3
+
+
+_UNDEFINED = (sp.zoo, sp.nan, sp.oo, -sp.oo)
+
+
+def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
+    """What is known about M; each fault is ``findings.error(...)`` (a Diagnostic of the file)."""
+    M, F = derivation.mass_matrix, derivation.forcing
+    system = derivation.system
+    where = system.location
+    nodes = set(postorder([*M, *F, *(e for _, e in derivation.kinematic_equations)]))
+    if any(node in nodes for node in _UNDEFINED):
+        findings.error("the equations contain an undefined value (zoo or nan: a division by zero or a "
+                       "logarithm of zero somewhere in the file)", "equations", location=where)
+    if sp.I in nodes:  # the loader refuses an imaginary expression; this is the last guard
+        findings.error("the equations contain the imaginary unit I: M, F and the kinematic equations must be real",
+                       "equations", location=where)
+    symmetric = _symmetric(M, findings, where)
+    values, missing = parameter_values(system)
+    if missing:
+        note = f"not checked: no value for {', '.join(missing)}"
+        return MassMatrixCheck(symmetric, None, 0, note)
+    return _positive_definite(system, M, values, symmetric, findings, where)
+
+
+def _symmetric(M: sp.ImmutableMatrix, findings, where: Location) -> bool | None:
+    answer: bool | None = True
+    for i in range(M.rows):
+        for j in range(i + 1, M.cols):
+            decision = decide_zero(M[i, j] - M[j, i])
+            if decision.zero is False:
+                findings.error(f"M is not symmetric: M[{i}, {j}] != M[{j}, {i}]", "mass_matrix", location=where)
+                return False
+            if decision.zero is None:
+                answer = None
+    return answer
+
+
+def _positive_definite(system: System, M, values, symmetric, findings,
+                       where: Location) -> MassMatrixCheck:
+    others = sorted(free_symbols(M) - set(values), key=lambda s: s.name)
+    # Symbols only in positions get values too, from their own stream: M's samples stay as they were.
+    placed = free_symbols([c for body in system.bodies for c in body.position]) - set(values) - set(others)
+    evaluated = 0
+    for point, more in zip(sample_points(others, PD_SAMPLES), sample_points(placed, PD_SAMPLES, seed=11)):
+        state = {**values, **more, **point}
+        try:
+            _require_real_positions(system, state)
+            numeric = np.array([[float(evaluate(M[i, j], state)[0]) for j in range(M.cols)] for i in range(M.rows)])
+        except UndefinedValue:
+            continue
+        evaluated += 1
+        smallest = float(np.linalg.eigvalsh((numeric + numeric.T) / 2).min()) if M.rows else 1.0
+        if smallest <= 1e-12 * max(1.0, float(np.abs(numeric).max())):
+            shown = ", ".join(f"{s.name}={v:.4g}" for s, v in point.items())
+            at = f"at the sample state {shown}" if shown else "at every state (M is constant)"
+            findings.error(f"M is not positive definite {at} "
+                           f"(smallest eigenvalue {smallest:.3g})", "mass_matrix",
+                           "check the masses and inertias, and that every independent rate moves some body",
+                           location=where)
+            return MassMatrixCheck(symmetric, False, evaluated)
+    if evaluated == 0:
+        return MassMatrixCheck(symmetric, None, 0, "not checked: M has no real value at the sample states")
+    return MassMatrixCheck(symmetric, True, evaluated)
+
+
+def _require_real_positions(system: System, state) -> None:
+    """UndefinedValue when a position is not real at the state: M there says nothing of the file.
+
+    ``sqrt(1 - x**2)`` is a position only for |x| <= 1; beyond, M is real but meaningless.
+    """
+    for body in system.bodies:
+        for coordinate in body.position:
+            evaluate(coordinate, state)

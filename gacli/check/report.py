@@ -1,0 +1,146 @@
+"""What ``gacli check`` found, per file and for the run, and its renderers for machines.
+
+:func:`to_json` and :func:`to_github` are pure; the rich table lives in
+:mod:`gacli.check.console`.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+
+from gacli.check.integrability import Classification
+from gacli.errors import Diagnostic
+from gacli.read.textsafe import printable, shortened
+
+JSON_VERSION = 1
+
+
+class PathsError(ValueError):
+    """Some command-line paths match no file (a usage error, exit code 2)."""
+
+
+@dataclass(frozen=True)
+class MassMatrixCheck:
+    """What is known about M: ``positive_definite`` is None when not checked (see ``note``)."""
+
+    symmetric: bool | None
+    positive_definite: bool | None
+    samples: int
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class FileReport:
+    """The outcome of checking one file."""
+
+    path: str
+    diagnostics: tuple[Diagnostic, ...] = ()
+    classifications: tuple[Classification, ...] = ()
+    k: int | None = None
+    independent: tuple[str, ...] = ()
+    mass_matrix: MassMatrixCheck | None = None
+    elapsed: float = 0.0
+    # Rolling rows that repeat the others: classified, but left out of the derivation's l.
+    dependent: tuple[str, ...] = ()
+
+    @property
+    def errors(self) -> tuple[Diagnostic, ...]:
+        return tuple(d for d in self.diagnostics if d.severity == "error")
+
+    @property
+    def warnings(self) -> tuple[Diagnostic, ...]:
+        return tuple(d for d in self.diagnostics if d.severity == "warning")
+
+    @property
+    def notes(self) -> tuple[Diagnostic, ...]:
+        """Shown, never failing, not even with ``strict``."""
+        return tuple(d for d in self.diagnostics if d.severity == "note")
+
+    def failed(self, strict: bool = False) -> bool:
+        return bool(self.errors or (strict and self.warnings))
+
+    def status(self, strict: bool = False) -> str:
+        """"error", "warning" (fails only under ``strict``) or "ok"."""
+        if self.errors:
+            return "error"
+        return "warning" if self.warnings else "ok"
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    files: tuple[FileReport, ...]
+    strict: bool = False
+
+    @property
+    def failed(self) -> tuple[FileReport, ...]:
+        return tuple(f for f in self.files if f.failed(self.strict))
+
+    @property
+    def exit_code(self) -> int:
+        """0 when every file passes, 1 otherwise (black's Report.return_code)."""
+        return 1 if self.failed else 0
+
+
+# -- renderers -------------------------------------------------------------------
+
+def to_json(report: CheckReport) -> str:
+    """The report as JSON (sorted keys, stable layout), for machines."""
+    files = [_file_json(f, report.strict) for f in report.files]
+    summary = {
+        "files": len(report.files), "failed": len(report.failed),
+        "errors": sum(len(f.errors) for f in report.files),
+        "warnings": sum(len(f.warnings) for f in report.files),
+        "notes": sum(len(f.notes) for f in report.files),
+    }
+    data = {"version": JSON_VERSION, "strict": report.strict, "exit_code": report.exit_code,
+            "summary": summary, "files": files}
+    return json.dumps(data, sort_keys=True, indent=2) + "\n"
+
+
+def _file_json(report: FileReport, strict: bool) -> dict:
+    mass = report.mass_matrix
+    return {
+        "path": report.path, "status": report.status(strict), "failed": report.failed(strict),
+        "k": report.k, "independent": list(report.independent), "elapsed": round(report.elapsed, 3),
+        "dependent": list(report.dependent),
+        "diagnostics": [_diagnostic_json(d) for d in report.diagnostics],
+        "classifications": [
+            {"kind": c.kind, "where": c.where, "text": c.text, "line": c.location.line,
+             "column": c.location.column, "integrable": c.integrable, "verdict": c.verdict, "method": c.method,
+             "test": c.test, "note": c.note}
+            for c in report.classifications
+        ],
+        "mass_matrix": None if mass is None else {
+            "symmetric": mass.symmetric, "positive_definite": mass.positive_definite,
+            "samples": mass.samples, "note": mass.note,
+        },
+    }
+
+
+def _diagnostic_json(d: Diagnostic) -> dict:
+    # Quotes of file text kept short here too: a 900 kB scalar must not become one JSON string.
+    return {"path": d.location.path, "line": d.location.line, "column": d.location.column,
+            "severity": d.severity, "where": shortened(d.where), "message": shortened(d.message),
+            "hint": shortened(d.hint)}
+
+
+def to_github(report: CheckReport) -> str:
+    """GitHub Actions workflow commands: one ``::error`` / ``::warning`` / ``::notice`` line per diagnostic."""
+    lines = []
+    for file in report.files:
+        for d in file.diagnostics:
+            level = {"error": "error", "note": "notice"}.get(d.severity, "warning")
+            properties = f"file={_gh_property(d.location.path)},line={d.location.line},col={d.location.column}"
+            where = f"{d.where}: " if d.where else ""
+            hint = f" ({d.hint})" if d.hint else ""
+            lines.append(f"::{level} {properties},title=gacli check::{_gh_data(where + d.message + hint)}")
+    return "".join(line + "\n" for line in lines)
+
+
+def _gh_data(text: str) -> str:
+    return printable(shortened(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
+
+
+def _gh_property(text: str) -> str:
+    return _gh_data(text).replace(":", "%3A").replace(",", "%2C")

@@ -1,0 +1,96 @@
+"""The energy along the path and whether it must be conserved; rates differentiated from the path."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.coerce import as_expr
+from gacli.equations import Derivation
+from gacli.graph import free_symbols
+
+_FD_FRACTION = 0.01          # finite-difference step, as a fraction of the solver's step
+
+
+# -- energy and its conservation ----------------------------------------------------
+
+def conservation_problems(derivation: Derivation) -> list[str]:
+    """Why E = T + V need not be constant along a motion; empty when it must be.
+
+    E is conserved when nothing external works on the system and nothing
+    depends on time: no inputs, no free functions, no ``work`` form and no
+    torques; forces only constant ones (given a potential −F·r); and no t in
+    the positions, the rotations, the constraints or the potential, with
+    every velocity homogeneous in u (no β₀ terms, v = V u and ω = W u).
+    """
+    system = derivation.system
+    out = []
+    if system.inputs:
+        out.append("inputs " + ", ".join(i.name for i in system.inputs))
+    if system.free_functions:
+        out.append("free functions " + ", ".join(f.name for f in system.free_functions))
+    if system.work is not None:
+        out.append("a work form (write conservative forces as a potential)")
+    if system.torques:
+        out.append("torques")
+    if any(_free(e) - _parameter_symbols(system) for force in system.forces for e in force.vector):
+        out.append("forces that are not constant")
+    if S.T in _free(system.potential):
+        out.append("a potential that depends on t")
+    if any(c.form.dt != 0 or S.T in _free(*(e for _, e in c.form.coefficients)) for c in system.constraints):
+        out.append("constraints that depend on t")
+    if any(_moves_with_time(m) for m in derivation.motions):
+        out.append("velocities with terms free of the independent rates (a moving support)")
+    return out
+
+
+def _moves_with_time(motion) -> bool:
+    parts = [motion.linear] + ([motion.angular] if motion.angular is not None else [])
+    return any(S.T in _free(*m.partials, *m.velocity0) or any(sp.simplify(e) != 0 for e in m.velocity0)
+               for m in parts)
+
+
+def _free(*exprs) -> set[sp.Symbol]:
+    return free_symbols([as_expr(e) for e in exprs])
+
+
+def _parameter_symbols(system) -> set[sp.Symbol]:
+    return {S.value(p.name) for p in system.parameters}
+
+
+def energy_expressions(derivation: Derivation) -> tuple[sp.Expr, sp.Expr]:
+    """T = Σ ½ m v·v + ½ ω·Iω with v = V u + v₀, ω = W u + ω₀; and V (constant forces included)."""
+    u = sp.Matrix(derivation.speeds)
+    kinetic = sp.S.Zero
+    for motion in derivation.motions:
+        v = motion.linear.partials * u + motion.linear.velocity0
+        kinetic += motion.body.mass * v.dot(v) / 2
+        if motion.angular is not None:
+            w = motion.angular.partials * u + motion.angular.velocity0
+            kinetic += (w.T * motion.body.inertia * w)[0, 0] / 2
+    potential = derivation.system.potential
+    for force in derivation.system.forces:
+        potential -= sp.Matrix(force.vector).dot(sp.Matrix(force.point))
+    return kinetic, potential
+
+
+# -- rates along the path -------------------------------------------------------------
+
+def path_rates(dense, t: np.ndarray, n: int) -> np.ndarray:
+    """d/dt of the first ``n`` states at ``t``, differentiated from the dense solution.
+
+    Each time is differentiated inside the polynomial of its own solver step
+    (``dense.interpolants``) by the five-point central difference with a step
+    of 1% of that solver step, so no kink between steps enters the result.
+    """
+    ts = dense.ts
+    segment = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, len(dense.interpolants) - 1)
+    out = np.empty((len(t), n))
+    for j in np.unique(segment):
+        mask = segment == j
+        tj, h = t[mask], _FD_FRACTION * abs(ts[j + 1] - ts[j])
+        f = dense.interpolants[j]
+        d = (f(tj - 2 * h) - 8 * f(tj - h) + 8 * f(tj + h) - f(tj + 2 * h)) / (12 * h)
+        out[mask] = np.atleast_2d(d)[:n].T
+    return out

@@ -1,0 +1,207 @@
+"""The run: the generated module imported, the problem compiled, solve_ivp, the measurements."""
+
+from __future__ import annotations
+
+import importlib.util
+import tempfile
+import uuid
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.coerce import as_expr
+from gacli.equations import Derivation
+from gacli.numeric.compiled import scalar, vectorized
+from gacli.simulate.energy import conservation_problems, energy_expressions, path_rates
+from gacli.simulate.results import ConstraintResidual, Simulation, short
+from gacli.simulate.spec import SimulationError, SimulationSpec, require
+from gacli.simulate.values import OptionValues
+
+_PROGRESS_STEPS = 200        # progress reports per run, at most
+
+
+# -- the run --------------------------------------------------------------------
+
+def simulate(derivation: Derivation, spec: SimulationSpec,
+             progress: Callable[[float], None] | None = None) -> Simulation:
+    """Integrate the generated equations from t = 0 to ``spec.t_end``.
+
+    ``progress(t)`` is called as the integration advances (at most about 200
+    times, t increasing). Every problem with the options is collected first
+    and raised together, before any integration.
+
+    Raises:
+        MissingExtraError: SciPy is not installed.
+        SimulationError: a value is missing or wrong, or the integration failed.
+    """
+    solve_ivp = require("scipy.integrate").solve_ivp
+    module = load_generated(derivation)
+    problem = _Problem.make(derivation, module, spec)
+    solution = _integrate(solve_ivp, problem, spec, progress)
+    t = np.linspace(0.0, spec.t_end, spec.points)
+    states = solution.sol(t).T
+    conservative = conservation_problems(derivation)
+    energy = kinetic = None
+    if not conservative:
+        kinetic, potential = problem.energies(t, states)
+        energy = kinetic + potential
+    return Simulation(
+        system=derivation.system.name, t=t, states=states, state_names=problem.state,
+        coordinates=problem.coordinates, parameters=dict(zip(problem.parameter_names, problem.p)),
+        method=spec.method, rtol=spec.rtol, atol=spec.atol, evaluations=int(solution.nfev),
+        energy=energy, kinetic_energy=kinetic, not_conservative=tuple(conservative),
+        residuals=problem.residuals(t, states, solution.sol),
+    )
+
+
+def load_generated(derivation: Derivation) -> ModuleType:
+    """Import the generated Python module from a temporary directory, outside sys.modules."""
+    from gacli.api import emit
+
+    files = emit(derivation, "python")
+    with tempfile.TemporaryDirectory(prefix="gacli-sim-") as folder:
+        (filename, text), = files.items()
+        path = Path(folder) / filename
+        path.write_text(text, encoding="utf-8")
+        name = f"_gacli_simulate_{derivation.system.name}_{uuid.uuid4().hex}"
+        spec = importlib.util.spec_from_file_location(name, path)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+    return module
+
+
+class _EvaluationFailed(Exception):
+    def __init__(self, t: float, x: np.ndarray, error: Exception) -> None:
+        super().__init__(str(error))
+        self.t, self.x, self.error = t, np.array(x, dtype=float), error
+
+
+def _integrate(solve_ivp, problem: "_Problem", spec: SimulationSpec, progress):
+    report = _throttled(progress, spec.t_end)
+
+    def fun(t, x):
+        report(t)
+        try:
+            return problem.module.rhs(t, x, problem.p, problem.r)
+        except (ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
+            raise _EvaluationFailed(t, x, exc) from exc
+
+    try:
+        solution = solve_ivp(fun, (0.0, spec.t_end), problem.x0, method=spec.method,
+                             rtol=spec.rtol, atol=spec.atol, dense_output=True)
+    except _EvaluationFailed as exc:
+        message = f"the equations cannot be evaluated at t = {exc.t:.6g}: {exc.error}"
+        if isinstance(exc.error, np.linalg.LinAlgError) and exc.t > 0:
+            # The usual cause in a model that was fine at t = 0: it has moved to a configuration
+            # where its constraints lose rank (a wheel lying flat), not a failure of the integrator.
+            message += " (the motion has reached a configuration where the model is singular)"
+        where = ", ".join(f"{n} = {short(v)}" for n, v in zip(problem.state, exc.x))
+        raise SimulationError([f"{message}; the state there: {where}"]) from None
+    if solution.status < 0:
+        reached = solution.t[-1] if len(solution.t) else 0.0
+        raise SimulationError([f"the integration stopped at t = {reached:.6g}: {solution.message}"])
+    if progress is not None:
+        progress(spec.t_end)
+    return solution
+
+
+def _throttled(progress, t_end: float) -> Callable[[float], None]:
+    if progress is None:
+        return lambda t: None
+    step, reached = t_end / _PROGRESS_STEPS, [0.0]
+
+    def report(t: float) -> None:
+        if t >= reached[0] + step:
+            reached[0] = t
+            progress(min(t, t_end))
+
+    return report
+
+
+# -- values from the options ------------------------------------------------------
+
+@dataclass(frozen=True)
+class _Problem:
+    """Everything the run needs, numbers resolved and functions compiled."""
+
+    derivation: Derivation
+    module: ModuleType
+    state: tuple[str, ...]
+    parameter_names: tuple[str, ...]
+    p: tuple[float, ...]
+    x0: np.ndarray
+    r: object                                  # () or a callable r(t, x)
+    functions: dict[sp.Symbol, sp.Expr]        # each free function's rates, as expressions in t
+
+    @property
+    def coordinates(self) -> tuple[str, ...]:
+        return tuple(c.name for c in self.derivation.system.coordinates)
+
+    @property
+    def arguments(self) -> list[sp.Symbol]:
+        """(t, x..., p...): the arguments of every compiled function."""
+        return _arguments(self.state, self.parameter_names)
+
+    @staticmethod
+    def make(derivation: Derivation, module: ModuleType, spec: SimulationSpec) -> "_Problem":
+        values = OptionValues(derivation, tuple(module.STATE))
+        values.check_numbers(spec)
+        values.check_plot_names(spec)
+        p = values.parameters(spec.parameters)
+        x0 = values.initial(spec.initial, p)
+        functions = values.functions(spec.functions)
+        inputs = values.inputs(spec.inputs)
+        r_exprs = values.r_entries(tuple(module.INPUTS), inputs, functions)
+        if values.problems:
+            raise SimulationError(values.problems)
+        r = ()
+        if r_exprs:
+            arguments = _arguments(values.state, values.parameter_names)
+            compiled = scalar(arguments, r_exprs)
+            r = lambda t, x: compiled(t, *x, *p)  # noqa: E731
+        return _Problem(derivation, module, values.state, values.parameter_names, p, x0, r, functions)
+
+    def _vectorized(self, expr: sp.Expr, extra=()) -> Callable:
+        f = vectorized(self.arguments + list(extra), expr)
+        return lambda t, states, *more: np.array(np.broadcast_to(
+            np.asarray(f(t, *states.T, *self.p, *more), dtype=float), t.shape))
+
+    def energies(self, t: np.ndarray, states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        kinetic, potential = energy_expressions(self.derivation)
+        return self._vectorized(kinetic)(t, states), self._vectorized(potential)(t, states)
+
+    def residuals(self, t: np.ndarray, states: np.ndarray, dense) -> dict[str, ConstraintResidual]:
+        system = self.derivation.system
+        n = len(system.coordinates)
+        coordinate_rates = None
+        out = {}
+        for i, constraint in enumerate(system.constraints):
+            label, text = f"constraints[{i}]", getattr(constraint, "text", "")
+            if constraint.relation is not None:
+                f = self._vectorized(constraint.relation.xreplace(self.functions))
+                out[label] = ConstraintResidual(label, text, True, f(t, states))
+                continue
+            if coordinate_rates is None:
+                coordinate_rates = path_rates(dense, t, n)
+            expr, fd = self._rate_form(constraint.form)
+            values = self._vectorized(expr, fd)(t, states, *coordinate_rates.T)
+            out[label] = ConstraintResidual(label, text, False, values)
+        return out
+
+    def _rate_form(self, form) -> tuple[sp.Expr, list[sp.Symbol]]:
+        """A ṙ + a₀ with coordinate rates as fresh symbols and quasi rates from β u + β₀."""
+        system, rates = self.derivation.system, self.derivation.rates
+        fd = [sp.Dummy(f"fd_{c.name}") for c in system.coordinates]
+        replace = {S.rate(c.name): d for c, d in zip(system.coordinates, fd)}
+        replace.update({S.rate(q.name): rates.rate(q.name) for q in system.quasi_coordinates})
+        expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
+        return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
+
+
+def _arguments(state: Sequence[str], parameters: Sequence[str]) -> list[sp.Symbol]:
+    return [S.T, *(S.value(n) for n in state), *(S.value(n) for n in parameters)]

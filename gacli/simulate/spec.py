@@ -1,0 +1,120 @@
+"""What a run is asked for: the options as a :class:`SimulationSpec`, and the errors of a run."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Sequence
+from dataclasses import dataclass
+from types import ModuleType
+
+from gacli.errors import GacliError
+
+METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
+DEFAULT_METHOD = "DOP853"
+DEFAULT_RTOL = 1e-9
+DEFAULT_ATOL = 1e-12
+DEFAULT_T_END = 10.0
+DEFAULT_POINTS = 1001
+INSTALL = "pip install 'gacli[sim]'"
+
+MAX_FUNCTION_ORDER = 8      # rates of a free function that generated code may ask for
+
+Assignments = tuple[tuple[str, str], ...]
+
+class SimulationError(GacliError, ValueError):
+    """Options that cannot be simulated, or an integration that failed; holds every problem."""
+
+    def __init__(self, problems: Sequence[str]) -> None:
+        self.problems = tuple(problems)
+        super().__init__(str(self))
+
+    def __str__(self) -> str:
+        if len(self.problems) == 1:
+            return self.problems[0]
+        lines = [f"{len(self.problems)} problems with the simulation:"]
+        return "\n".join(lines + [f"  {p}" for p in self.problems])
+
+
+class MissingExtraError(GacliError, ImportError):
+    """An optional dependency of ``gacli simulate`` is not installed."""
+
+
+def require(module: str, purpose: str = "simulation") -> ModuleType:
+    """Import ``module`` or say what to install (``scipy.integrate``, ``matplotlib``)."""
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        top = module.split(".")[0]
+        raise MissingExtraError(f"{purpose} needs {top}, which is not installed: {INSTALL}") from None
+
+# -- options --------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class SimulationSpec:
+    """What to simulate, as given on the command line (values still unparsed text)."""
+
+    parameters: Assignments = ()
+    initial: Assignments = ()
+    inputs: Assignments = ()
+    functions: Assignments = ()
+    t_end: float = DEFAULT_T_END
+    method: str = DEFAULT_METHOD
+    rtol: float = DEFAULT_RTOL
+    atol: float = DEFAULT_ATOL
+    points: int = DEFAULT_POINTS
+    show: tuple[str, ...] = ()
+    phase: tuple[str, ...] = ()
+
+
+def spec_from_options(*, set: Sequence[str] = (), init: Sequence[str] = (), input: Sequence[str] = (),
+                      function: Sequence[str] = (), show: str | None = None, phase: str | None = None,
+                      **numbers) -> SimulationSpec:
+    """A spec from the raw option strings (each option may be repeated).
+
+    >>> spec_from_options(set=["M=1,a=f(1,2)"], t_end=2.0).parameters
+    (('M', '1'), ('a', 'f(1,2)'))
+    """
+    def joined(texts, option):
+        return tuple(pair for text in texts for pair in parse_assignments(text, option))
+
+    return SimulationSpec(
+        parameters=joined(set, "--set"), initial=joined(init, "--init"),
+        inputs=joined(input, "--input"), functions=joined(function, "--function"),
+        show=tuple(split_top_level(show or "", "--show")), phase=tuple(split_top_level(phase or "", "--phase")),
+        **numbers,
+    )
+
+
+def split_top_level(text: str, option: str = "") -> list[str]:
+    """Split on the commas outside parentheses; empty pieces are dropped.
+
+    >>> split_top_level("a=1, b=atan2(1, 2)")
+    ['a=1', 'b=atan2(1, 2)']
+    """
+    pieces, depth, start = [], 0, 0
+    for i, char in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if depth < 0:
+            raise SimulationError([f"{option} '{text}': unmatched ')' at column {i + 1}".lstrip()])
+        if char == "," and depth == 0:
+            pieces.append(text[start:i])
+            start = i + 1
+    if depth:
+        raise SimulationError([f"{option} '{text}': unclosed '('".lstrip()])
+    pieces.append(text[start:])
+    return [p.strip() for p in pieces if p.strip()]
+
+
+def parse_assignments(text: str, option: str = "") -> list[tuple[str, str]]:
+    """``"a=1,b=f(1,2)"`` → ``[("a", "1"), ("b", "f(1,2)")]``; commas inside parentheses stay.
+
+    >>> parse_assignments("x=1, dot(x)=-2*a")
+    [('x', '1'), ('dot(x)', '-2*a')]
+    """
+    out = []
+    for piece in split_top_level(text, option):
+        name, equals, value = piece.partition("=")
+        if not equals or not name.strip() or not value.strip():
+            raise SimulationError([f"{option} '{piece}': expected name=value".lstrip()])
+        out.append((name.strip(), value.strip()))
+    return out

@@ -1,0 +1,250 @@
+"""The fundamental equation (eq. 14.10) over all n + p rates, with one multiplier per relation.
+
+Shared by the independent check (:mod:`gacli.verify`) and the constraint
+reactions (:mod:`gacli.reactions`). Imports none of the derivation's modules
+(kinematics, forces, equations, gibbs; a test checks it): the motion is
+built again here from the system's records alone.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from gacli import symbols as S
+from gacli.model import Form, System
+from gacli.numeric.compiled import Compiled
+
+DEFAULT_SEED = 1410
+DPS = 30                  # working precision of the numerical check
+FUNCTION_ORDERS = 6       # derivatives of free functions followed by d/dt
+_RANK_TOL = mpmath.mpf("1e-20")
+
+
+@dataclass(frozen=True)
+class FundamentalEquations:
+    """Eq. (14.10) over all n + p rates, with one multiplier per relation.
+
+    .. code:: text
+
+        mass · r̈ + inertial − loads = Aᵀ λ
+        A r̈ + relation_rest = 0          (the derivative of A ṙ + a₀ = 0)
+
+    ``names`` are the rates (coordinates, then quasi-coordinates); the
+    relations are the constraints (``constraint_count`` of them) then the
+    quasi-coordinate definitions. Expressions are in the plain symbols
+    x, dot(x), ddot(x) of every rate, with no rate eliminated.
+    """
+
+    names: tuple[str, ...]
+    relations: tuple[str, ...]
+    constraint_count: int
+    mass: sp.ImmutableMatrix
+    inertial: sp.ImmutableMatrix
+    loads: sp.ImmutableMatrix
+    A: sp.ImmutableMatrix
+    a0: sp.ImmutableMatrix
+    relation_rest: sp.ImmutableMatrix
+
+
+def function_rates(system: System) -> dict[sp.Symbol, sp.Symbol]:
+    """Each free function's rate of order o to the next one: d/dt of the free functions."""
+    return {S.rate(f.name, o): S.rate(f.name, o + 1) for f in system.free_functions for o in range(FUNCTION_ORDERS)}
+
+
+class _Motion:
+    """Velocities and their projections on the partial rates ∂/∂ṙ_j, with no rate eliminated."""
+
+    def __init__(self, system: System) -> None:
+        self.names = system.rate_names
+        coords = [c.name for c in system.coordinates]
+        self.q = [S.value(c) for c in coords]
+        self.qdot = sp.Matrix([S.rate(c) for c in coords]) if coords else sp.zeros(0, 1)
+        self.functions = function_rates(system)
+        # Full total derivative: q → q̇, every ṙ → r̈, the free functions, t.
+        self.chain = {S.value(c): S.rate(c) for c in coords}
+        self.chain.update({S.rate(n): S.rate(n, 2) for n in self.names})
+        self.chain.update(self.functions)
+
+    def d_dt(self, m: sp.Matrix) -> sp.Matrix:
+        return m.applyfunc(lambda e: S.time_derivative(e, self.chain))
+
+    def velocity(self, position) -> sp.Matrix:
+        r = sp.Matrix(position)
+        J = r.jacobian(self.q) if self.q else sp.zeros(3, 0)
+        return J * self.qdot + r.applyfunc(lambda e: S.time_derivative(e, self.functions))
+
+    def angular_velocity(self, rotation: tuple[Form, Form, Form]) -> sp.Matrix:
+        return sp.Matrix([sum((f.coefficient(n) * S.rate(n) for n in self.names), f.dt) for f in rotation])
+
+    def along(self, vector: sp.Matrix, v: sp.Matrix) -> list[sp.Expr]:
+        """vector · ∂v/∂ṙ_j for every rate j."""
+        return [(vector.T * v.diff(S.rate(n)))[0] for n in self.names]
+
+
+def _inertia_terms(system: System, motion: _Motion) -> list[sp.Expr]:
+    """Σ_bodies m a·∂v/∂ṙ_j + (Iα + ω×Iω)·∂ω/∂ṙ_j for every rate j."""
+    lhs = [sp.S.Zero] * len(motion.names)
+    for body in system.bodies:
+        v = motion.velocity(body.position)
+        for j, term in enumerate(motion.along(body.mass * motion.d_dt(v), v)):
+            lhs[j] += term
+        if body.is_rigid:
+            w = motion.angular_velocity(body.rotation)
+            I = sp.Matrix(body.inertia)
+            euler = I * motion.d_dt(w) + w.cross(I * w)
+            for j, term in enumerate(motion.along(euler, w)):
+                lhs[j] += term
+    return lhs
+
+
+def _load_terms(system: System, motion: _Motion) -> list[sp.Expr]:
+    """Q̃_j, the generalized force of the loads on every unreduced rate j (eq. 14.13)."""
+    names = motion.names
+    loads = [sp.S.Zero] * len(names)
+    bodies = {b.name: b for b in system.bodies}
+    for force in system.forces:
+        for j, term in enumerate(motion.along(sp.Matrix(force.vector), motion.velocity(force.point))):
+            loads[j] += term
+    for torque in system.torques:
+        w = motion.angular_velocity(bodies[torque.body].rotation)
+        for j, term in enumerate(motion.along(sp.Matrix(torque.vector), w)):
+            loads[j] += term
+    if system.work is not None:
+        for j, n in enumerate(names):
+            loads[j] += system.work.coefficient(n)
+    coords = {c.name for c in system.coordinates}
+    for j, n in enumerate(names):
+        if n in coords and system.potential != 0:
+            loads[j] -= sp.diff(system.potential, S.value(n))
+    return loads
+
+
+def _relations(system: System, names) -> list[tuple[str, Form]]:
+    """The constraints (eq. 14.1), then θ̇ − C q̇ − C₀ = 0 for each quasi-coordinate's differential (14.2)."""
+    rows: list[tuple[str, Form]] = [(f"constraints[{i}]", c.form) for i, c in enumerate(system.constraints)]
+    for qc in system.quasi_coordinates:
+        if qc.differential is not None:
+            C = qc.differential
+            coefficients = tuple((n, (1 if n == qc.name else 0) - C.coefficient(n)) for n in names)
+            rows.append((f"quasi_coordinates.{qc.name}", Form(coefficients, -C.dt)))
+    return rows
+
+
+def fundamental_equations(system: System) -> FundamentalEquations:
+    """Build the unreduced equations of a system (eqs. 14.1, 14.2, 14.10)."""
+    motion = _Motion(system)
+    names = motion.names
+    N = len(names)
+    accelerations = [S.rate(n, 2) for n in names]
+    lhs_m = sp.Matrix(_inertia_terms(system, motion))
+    zero = {a: 0 for a in accelerations}
+    mass = lhs_m.jacobian(accelerations) if N else sp.zeros(0, 0)
+    inertial = lhs_m.xreplace(zero)
+    rows = _relations(system, names)
+    A = sp.Matrix([[form.coefficient(n) for n in names] for _, form in rows]) if rows else sp.zeros(0, N)
+    a0 = sp.Matrix([form.dt for _, form in rows]) if rows else sp.zeros(0, 1)
+    relation = A * sp.Matrix([S.rate(n) for n in names]) + a0 if rows else sp.zeros(0, 1)
+    relation_rest = motion.d_dt(relation).xreplace(zero) if rows else sp.zeros(0, 1)
+    return FundamentalEquations(
+        names=tuple(names), relations=tuple(r for r, _ in rows), constraint_count=len(system.constraints),
+        mass=sp.ImmutableMatrix(mass), inertial=sp.ImmutableMatrix(inertial),
+        loads=sp.ImmutableMatrix(sp.Matrix(_load_terms(system, motion))), A=sp.ImmutableMatrix(A),
+        a0=sp.ImmutableMatrix(a0), relation_rest=sp.ImmutableMatrix(relation_rest),
+    )
+
+
+# -- solving it numerically ---------------------------------------------------------
+
+def solve_least_squares(K: mpmath.matrix, b: mpmath.matrix) -> tuple[mpmath.matrix, list[int]]:
+    """x minimizing |Kx − b| (minimum norm), and the unknowns left free by K (its null space)."""
+    n = K.rows
+    if n == 0:
+        return mpmath.matrix(0, 1), []
+    U, s, V = mpmath.svd_r(K)
+    smax = max(abs(x) for x in s) if n else 0
+    x = mpmath.matrix(n, 1)
+    free: set[int] = set()
+    for i in range(len(s)):
+        if smax == 0 or abs(s[i]) <= _RANK_TOL * smax:
+            for j in range(n):
+                if abs(V[i, j]) > mpmath.mpf("1e-12"):
+                    free.add(j)
+            continue
+        coef = sum(U[r, i] * b[r] for r in range(n)) / s[i]
+        for j in range(n):
+            x[j] += coef * V[i, j]
+    return x, sorted(free)
+
+
+def redundant_relations(fundamental: FundamentalEquations, seed: int = DEFAULT_SEED) -> tuple[int, ...]:
+    """Rows of A that repeat the rows before them (e.g. two wheels on one axle).
+
+    Decided at a random configuration, at 30 digits: a generic rank. Such a
+    row changes no acceleration; its multiplier is not determined (the
+    reaction is statically indeterminate between it and the rows it repeats).
+    """
+    A = fundamental.A
+    if A.rows == 0:
+        return ()
+    rng = np.random.default_rng(seed)
+    symbols = sorted(A.free_symbols, key=lambda s: s.name)
+    with mpmath.workdps(DPS):
+        point = {s: mpmath.mpf(rng.uniform(0.4, 1.6)) for s in symbols}
+        values = Compiled({"A": A})(point)["A"]
+        numeric = [[values[i, j] for j in range(A.cols)] for i in range(A.rows)]
+        kept: list[list] = []
+        redundant = []
+        for i, row in enumerate(numeric):
+            if _rank(kept + [row]) > len(kept):
+                kept.append(row)
+            else:
+                redundant.append(i)
+    return tuple(redundant)
+
+
+def _rank(rows: list[list]) -> int:
+    if not rows:
+        return 0
+    s = mpmath.svd_r(mpmath.matrix(rows), compute_uv=False)
+    biggest = max(abs(x) for x in s)
+    return sum(1 for x in s if biggest and abs(x) > _RANK_TOL * biggest)
+
+
+def kkt_entries(mass, A, loads, inertial, rest, N: int, m: int, zero) -> tuple[list[list], list]:
+    """[mass −Aᵀ; A 0] and [loads − inertial; −rest] as rows and a column, of SymPy or mpmath entries."""
+    K = [[zero] * (N + m) for _ in range(N + m)]
+    b = [zero] * (N + m)
+    for i in range(N):
+        for j in range(N):
+            K[i][j] = mass[i, j]
+        for r in range(m):
+            K[i][N + r] = -A[r, i]
+        b[i] = loads[i, 0] - inertial[i, 0]
+    for r in range(m):
+        for j in range(N):
+            K[N + r][j] = A[r, j]
+        b[N + r] = -rest[r, 0]
+    return K, b
+
+
+def kkt(v: dict, N: int, m: int, force_svd: bool = False) -> tuple[list, list[int]]:
+    """Solve [mass −Aᵀ; A 0] [r̈; λ] = [loads − inertial; −rest]; r̈ then λ."""
+    rows, column = kkt_entries(v["mass"], v["A"], v["loads"], v["inertial"], v["rest"], N, m, mpmath.mpf(0))
+    K, b = mpmath.matrix(rows), mpmath.matrix(column)
+    if not force_svd:
+        try:
+            x = mpmath.lu_solve(K, b)
+            return [x[i] for i in range(N + m)], []
+        except ZeroDivisionError:
+            pass  # singular: least squares, and say which unknowns are free
+    x, free = solve_least_squares(K, b)
+    return [x[i] for i in range(N + m)], free
+
+
+def column(m, size: int) -> list:
+    """The first ``size`` entries of an mpmath column (none of an empty one, which is None)."""
+    return [m[i, 0] for i in range(size)] if size else []
