@@ -6,7 +6,7 @@ bicycle in the same angles. For each tool the table gives the derivation time
 (best of ``--repeat`` interleaved rounds, SymPy's cache cleared before each)
 and the operation count of what a rhs evaluates (kinematics, M, F) after
 common-subexpression elimination. Both counts use the same one-pass CSE over
-distinct subexpressions (``gacli.graph.shared_subexpressions``): SymPy's
+distinct subexpressions (``gacli.algebra.graph.shared_subexpressions``): SymPy's
 canonical ``cse`` sorts arguments by tree size, and as trees the bicycle's
 equations are millions of nodes. Kane's M and F are 6 x 6 and 6 x 1 (all six
 speeds, with the constraint rows); gacli's are 3 x 3 and 3 x 1.
@@ -48,8 +48,8 @@ KANE_NAMES = {"q1": "yaw", "q2": "roll", "q4": "pitch", "q5": "steer",
 
 
 def derive_gacli():
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     return derive(load(BICYCLE))
 
@@ -62,7 +62,7 @@ def derive_kane():
 
 def operations(exprs) -> tuple[int, int]:
     """(count_ops after the one-pass CSE, number of temporaries)."""
-    from gacli.graph import shared_subexpressions
+    from gacli.algebra.graph import shared_subexpressions
 
     replacements, reduced = shared_subexpressions(list(exprs), sp.numbered_symbols("_t"))
     ops = sum(sp.count_ops(v) for _, v in replacements) + sum(sp.count_ops(e) for e in reduced)
@@ -71,7 +71,7 @@ def operations(exprs) -> tuple[int, int]:
 
 def plain_kane(model) -> tuple[list[sp.Expr], dict[str, sp.Symbol]]:
     """Kane's kinematics, M, F with q(t), u(t) as plain symbols named as gacli names them."""
-    from gacli.graph import substitute
+    from gacli.algebra.graph import substitute
 
     t = me.dynamicsymbols._t
     functions = {f: sp.Symbol(KANE_NAMES[f.func.__name__]) for f in model.q + model.u}
@@ -82,7 +82,7 @@ def plain_kane(model) -> tuple[list[sp.Expr], dict[str, sp.Symbol]]:
 
 def agreement(derivation, model, seed: int) -> tuple[float, dict]:
     """The largest relative difference between the two at a random state."""
-    from gacli import symbols as S
+    from gacli.algebra import symbols as S
     from gacli.emit.naming import parameter_defaults
     from gacli.numeric import Program
 
@@ -125,7 +125,7 @@ def agreement(derivation, model, seed: int) -> tuple[float, dict]:
 
 
 def _plain_constraints(model):
-    from gacli.graph import substitute
+    from gacli.algebra.graph import substitute
 
     functions = {f: sp.Symbol(KANE_NAMES[f.func.__name__]) for f in model.q + model.u}
     return substitute([sp.sympify(c) for c in model.velocity_constraints], functions)

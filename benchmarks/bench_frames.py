@@ -13,9 +13,9 @@ routes, checked against the first at a random point.
      the transport theorem with gacli's memoised time differentiator;
   c. a minimal frame layer of our own (below): components per frame, d/dt by
      the transport theorem, each pair of parts dotted midway on the tree;
-  d. gacli today: gacli.frames as gacli.loading uses it (DCMs to N, points in
-     N), d/dt twice, a·a in N, trig.reduce (as gacli.gibbs);
-  d*. for scale, gacli.gibbs's G after the constraints are solved (in u, u̇).
+  d. gacli today: gacli.loader.frames as gacli.loader.loading uses it (DCMs to N, points in
+     N), d/dt twice, a·a in N, trig.reduce (as gacli.mechanics.gibbs);
+  d*. for scale, gacli.mechanics.gibbs's G after the constraints are solved (in u, u̇).
 
 Counts: count_ops of the trees and after bench_bicycle.py's one-pass CSE. For
 c and d also M (upper) and F over all q̈ from the partials (M_rs = Σ m V_r·V_s
@@ -35,14 +35,14 @@ import sympy as sp
 import yaml
 from sympy.physics import vector as pv
 
-from gacli import frames as F
-from gacli import symbols as S
-from gacli import trig
-from gacli.gibbs import _body_gibbs, acceleration_chain
-from gacli.graph import shared_subexpressions, substitute
-from gacli.motions import body_motions
-from gacli.rates import solve_rates
-from gacli.loading import load
+from gacli.loader import frames as F
+from gacli.algebra import symbols as S
+from gacli.algebra import trig
+from gacli.mechanics.gibbs import _body_gibbs, acceleration_chain
+from gacli.algebra.graph import shared_subexpressions, substitute
+from gacli.mechanics.motions import body_motions
+from gacli.mechanics.rates import solve_rates
+from gacli.loader.loading import load
 from gacli.numeric import Program
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -258,7 +258,7 @@ def products_own(geo: Geometry, built):
 # -- d. gacli today: inertial components, trig.reduce ------------------------
 
 def route_gacli(geo: Geometry):
-    """gacli.frames as gacli.loading uses it: DCMs to N, positions in N, ω dt as forms in body axes."""
+    """gacli.loader.frames as gacli.loader.loading uses it: DCMs to N, positions in N, ω dt as forms in body axes."""
     d, coords = chain(geo), [S.value(c) for c in geo.coordinates]
     differential = lambda e: sp.Matrix([[sp.diff(e, c) for c in coords] + [0]])  # noqa: E731
     frames = {"N": F.inertial_frame(len(coords) + 1)}
@@ -282,7 +282,7 @@ def products_gacli(geo: Geometry, motions):
 
 
 def route_gacli_real(geo: Geometry):
-    """gacli's own G per body, constraints solved (what gacli.gibbs forms): built and multiplied together."""
+    """gacli's own G per body, constraints solved (what gacli.mechanics.gibbs forms): built and multiplied together."""
     system = load(geo.path)
     rates = solve_rates(system)
     d = S.time_differentiator(acceleration_chain(system, rates))
@@ -297,7 +297,7 @@ ROUTES = {  # label: (title, build, products)
     "b": ("b. physics.vector, plain symbols", route_plain_pv, products_own),
     "c": ("c. own frame layer (prototype)", route_own, products_own),
     "d": ("d. gacli today: N + trig.reduce", route_gacli, products_gacli),
-    "d*": ("d*. gacli's G (gacli.gibbs), constraints solved", route_gacli_real, None),
+    "d*": ("d*. gacli's G (gacli.mechanics.gibbs), constraints solved", route_gacli_real, None),
 }
 
 

@@ -9,7 +9,7 @@ Kane alternately, ``repeat`` times, and the medians are reported.
 What counts as what, in the child process:
 
 * imports (not timed as derivation): for gacli ``sympy``, ``gacli``,
-  ``gacli.loading`` and ``gacli.equations`` (the modules behind
+  ``gacli.loader.loading`` and ``gacli.mechanics.equations`` (the modules behind
   ``gacli.load`` and ``gacli.derive``, which ``gacli derive`` imports
   before it reads the file); for Kane ``sympy``,
   ``sympy.physics.mechanics`` and ``bench_kane`` (the model's code);
@@ -53,8 +53,8 @@ started, root, bench, tool, size, path = float(sys.argv[1]), *sys.argv[2:]
 sys.path[:0] = [root, bench]
 if tool == "gacli":
     import sympy, gacli
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
     def first():
         return derive(load(path))
 else:

@@ -73,8 +73,8 @@ int main(int argc, char **argv)
 
 def emit(path: Path, directory: Path) -> dict[str, str]:
     from gacli.api import emit as emit_format
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     derivation = derive(load(path))
     files = {}

@@ -49,9 +49,9 @@ clock = time.perf_counter
 def run_once(path: Path, fmt: str) -> float:
     """Seconds for load, derive and the output in ``fmt`` (what ``gacli derive`` does)."""
     from gacli.api import emit
-    from gacli.equations import derive
-    from gacli.loading import load
-    from gacli.report import derivation_report
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
+    from gacli.display.report import derivation_report
 
     from sympy.core.cache import clear_cache
 

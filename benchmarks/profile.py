@@ -51,8 +51,8 @@ def system_file(case: str, n: int, directory: Path) -> Path:
 
 
 def profile(path: Path) -> tuple[float, pstats.Stats, cProfile.Profile]:
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     clear_cache()
     profiler = cProfile.Profile()
@@ -66,8 +66,8 @@ def profile(path: Path) -> tuple[float, pstats.Stats, cProfile.Profile]:
 
 def stage_times(path: Path) -> tuple[float, list[tuple[str, float]]]:
     """Seconds of load and of each stage derive() announces through its ``progress`` callback (no profiler)."""
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     clear_cache()
     marks: list[tuple[str, float]] = []
@@ -104,8 +104,8 @@ def main(argv: list[str] | None = None) -> None:
     args = parser.parse_args(argv)
 
     # Warm up the imports so that the profile shows the derivation only.
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     with tempfile.TemporaryDirectory(prefix="gacli-profile-") as scratch:
         derive(load(write_pendulum(1, Path(scratch))))

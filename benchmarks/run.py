@@ -65,8 +65,8 @@ class NotAvailable(Exception):
 # -- the gacli side ------------------------------------------------------------------
 
 def derive_gacli(path: Path):
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     return derive(load(path))
 
@@ -76,7 +76,7 @@ def gacli_slots(derivation):
     try:
         from gacli.emit.naming import layout
     except ImportError:
-        from gacli import symbols as S
+        from gacli.algebra import symbols as S
 
         system = derivation.system
         return (tuple(derivation.state), tuple(S.value(p.name) for p in system.parameters),

@@ -18,8 +18,8 @@ sys.path.insert(0, str(HERE))
 
 from run import emit, emitted_rhs_ops  # noqa: E402
 
-from gacli.equations import derive  # noqa: E402
-from gacli.loading import load  # noqa: E402
+from gacli.mechanics.equations import derive  # noqa: E402
+from gacli.loader.loading import load  # noqa: E402
 
 
 def main() -> None:

@@ -36,8 +36,8 @@ _LAZY = {
     "Derivation": "gacli.api",
     "derive": "gacli.api",
     "System": "gacli.model",
-    "load": "gacli.loading",
-    "loads": "gacli.loading",
+    "load": "gacli.loader.loading",
+    "loads": "gacli.loader.loading",
     "emit": "gacli.api",
     "DerivationError": "gacli.errors",
     "Diagnostic": "gacli.errors",
@@ -57,7 +57,7 @@ if TYPE_CHECKING:  # pragma: no cover
         Location,
         SystemFileError,
     )
-    from gacli.loading import load, loads
+    from gacli.loader.loading import load, loads
     from gacli.model import System
 
 

@@ -1,7 +1,7 @@
 """The resource budget of one command on one file, shared by every command.
 
 ``gacli check`` stops a runaway file with a wall-clock budget (the SIGALRM
-:func:`gacli.integrability.time_limit`, main thread only). Every other
+:func:`gacli.numeric.zero.time_limit`, main thread only). Every other
 command (derive, gibbs, verify, linearize, simulate) uses the same limit
 through :func:`budget`, so that a file which makes SymPy work forever ends
 in one located message naming the step that was running, never a hang or
@@ -15,7 +15,7 @@ import traceback
 from collections.abc import Iterator
 
 from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
-from gacli.zero import time_limit
+from gacli.numeric.zero import time_limit
 
 DEFAULT_TIMEOUT = 300.0
 TIMEOUT_HELP = "Seconds allowed for the whole command (0: no limit)."

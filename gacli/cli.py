@@ -52,12 +52,12 @@ def _boundary():
     try:
         yield
     except SystemFileError as exc:
-        from gacli import console
+        from gacli.display import console
 
         console.diagnostics(exc.diagnostics)
         raise typer.Exit(code=1) from None
     except GacliError as exc:
-        from gacli import console
+        from gacli.display import console
 
         # Several problems (gacli simulate's options) are one line each, not one line with \n in it.
         problems = getattr(exc, "problems", ())
@@ -68,7 +68,7 @@ def _boundary():
         raise typer.Exit(code=1) from None
     except MemoryError:
         # Outside a budget (which names the step), still one message, not a traceback.
-        from gacli import console
+        from gacli.display import console
 
         console.error("ran out of memory (the system is too large for this machine)")
         raise typer.Exit(code=1) from None
@@ -85,10 +85,10 @@ def _budget(path: Path, seconds: float):
 
 def _derive(path: Path, state):
     """Read, load and derive within the budget, telling it (and the spinner) each step."""
-    from gacli import console
+    from gacli.display import console
     from gacli.budget import STEP_LOAD, STEP_READ
-    from gacli.equations import derive
-    from gacli.loading import load_source
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load_source
     from gacli.read.source import read_source
 
     state(STEP_READ)
@@ -133,7 +133,7 @@ def derive(
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Derive the Gibbs-Appell equations of a system and print them."""
-    from gacli import console
+    from gacli.display import console
 
     derive_usage(format, output, steps, reactions)
     with _boundary():
@@ -163,7 +163,7 @@ def derive(
 
 
 def _text_report(derivation, steps: bool, reactions: bool):
-    from gacli.report import derivation_report, reactions_report, steps_report
+    from gacli.display.report import derivation_report, reactions_report, steps_report
 
     sections = tuple((steps_report if steps else derivation_report)(derivation))
     if reactions:
@@ -178,8 +178,8 @@ def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
     Only its acceleration terms, eqs. (14.17) and (14.21): the terms free of
     accelerations play no part in the equations.
     """
-    from gacli import console
-    from gacli.report import gibbs_report
+    from gacli.display import console
+    from gacli.display.report import gibbs_report
 
     with _boundary():
         with _budget(file, timeout) as state:
@@ -219,7 +219,7 @@ def check(
     with _boundary():
         try:
             if format == "text":
-                from gacli import console
+                from gacli.display import console
                 from gacli.check import console as check_console
 
                 with console.progress("checking") as step:
@@ -324,7 +324,7 @@ def linearize(
     Prints A, B and the eigenvalues of A, numerically (or A and B
     symbolically, with --symbolic).
     """
-    from gacli import console
+    from gacli.display import console
     from gacli import linearize as L
 
     with _boundary():
@@ -371,7 +371,7 @@ def verify(
     Eq. (14.10) over all the rates, with multipliers, compared with the
     derivation at random admissible states.
     """
-    from gacli import console
+    from gacli.display import console
 
     with _boundary():
         from gacli.verify import format_report

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import GacliError
 
 _STEP = 1e-30
@@ -149,7 +149,7 @@ def _jacobian(kinematic, mass, forcing, x0, r0, wrt: str) -> np.ndarray:
 def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None = None) -> tuple[sp.Matrix, sp.Matrix]:
     """A and B as expressions, at an operating point given by expressions (small systems)."""
     from gacli.emit.naming import layout
-    from gacli.readable import displayable
+    from gacli.algebra.readable import displayable
 
     if not displayable(derivation):
         raise LinearizeError("--symbolic: the equations of this system are too large for a symbolic "

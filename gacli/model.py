@@ -1,6 +1,6 @@
 """The validated system: frozen records holding SymPy expressions.
 
-Everything here has been parsed and checked by :mod:`gacli.loading`; the
+Everything here has been parsed and checked by :mod:`gacli.loader.loading`; the
 derivation stages read these records and never the YAML. Differential forms
 (eq. 14.1, 14.2, rigid-body rotations, virtual work) are stored as their
 coefficients on the differentials of the coordinates and quasi-coordinates,

@@ -11,7 +11,7 @@ bicycle's equations would take minutes to print and pages to scroll.
 
 from __future__ import annotations
 
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 
 # Tree nodes of M and F together, above which a notebook shows a summary.
 # The shipped systems other than the bicycle stay under 2,000; a page of
@@ -78,7 +78,7 @@ def _summary(d: Derivation) -> list[str]:
 
 # The derivation is a record of the mechanics stage, which knows nothing of LaTeX; it gets its
 # notebook face here, a stage above, when this module is imported. gacli.api imports it, so every
-# Derivation reached through gacli.derive shows itself typeset, and gacli.equations never imports
-# the emitter that prints it (which would close a circle through gacli.steps).
+# Derivation reached through gacli.derive shows itself typeset, and gacli.mechanics.equations never imports
+# the emitter that prints it (which would close a circle through gacli.display.steps).
 Derivation._repr_latex_ = derivation_latex
 

@@ -1,6 +1,6 @@
 """The constraint forces: the multipliers λ of the fundamental equation (eq. 14.10).
 
-The Gibbs-Appell route (:mod:`gacli.equations`) eliminates the dependent
+The Gibbs-Appell route (:mod:`gacli.mechanics.equations`) eliminates the dependent
 rates first (eq. 14.7) and never sees a constraint force; the generated
 code's ``reactions`` (:mod:`gacli.emit.assembly`) takes it from here, and so
 do the text report and :func:`reaction_function` for tests.
@@ -35,13 +35,13 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.errors import DerivationError
-from gacli.graph import substitute
+from gacli.algebra.graph import substitute
 from gacli.model import System
 from gacli.numeric import parameter_values
 from gacli.numeric.compiled import Compiled
-from gacli.readable import displayable
+from gacli.algebra.readable import displayable
 from gacli.verify.fundamental import (
     DPS, FundamentalEquations, column, function_rates, fundamental_equations, kkt, kkt_entries, redundant_relations,
 )

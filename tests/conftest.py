@@ -18,8 +18,8 @@ os.environ.setdefault("GACLI_WIDTH", "3000")
 @functools.lru_cache(maxsize=None)
 def derived(name: str):
     """The derivation of systems/<name>.yaml (cached: derivations are immutable)."""
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     return derive(load(SYSTEMS / f"{name}.yaml"))
 
@@ -44,7 +44,7 @@ def require_tool(name: str) -> str:
 
 
 # Shipped systems whose equations are too large to print for reading
-# (gacli.readable.DISPLAY_NODES); tests/test_readable.py checks this list.
+# (gacli.algebra.readable.DISPLAY_NODES); tests/test_readable.py checks this list.
 LARGE = frozenset({"whipple_bicycle"})
 
 
@@ -55,7 +55,7 @@ def evaluate(exprs, values):
     import numpy as np
     import sympy as sp
 
-    from gacli.graph import is_large
+    from gacli.algebra.graph import is_large
     from gacli.numeric import Program
 
     exprs = list(exprs)

@@ -37,8 +37,8 @@ def reference(v: float) -> np.ndarray:
 
 @functools.lru_cache(maxsize=1)
 def bicycle():
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     return derive(load(BICYCLE))
 

@@ -1,11 +1,11 @@
-"""gacli.canonical.product builds exactly what sympy.Mul builds, or defers to it."""
+"""gacli.algebra.canonical.product builds exactly what sympy.Mul builds, or defers to it."""
 
 import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli.canonical import _only_sorting_needed, mul, product
+from gacli.algebra.canonical import _only_sorting_needed, mul, product
 
 x, y, z = sp.symbols("x y z")
 a, b = sp.symbols("a b", positive=True)

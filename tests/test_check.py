@@ -23,9 +23,9 @@ from gacli.check import (
 )
 from gacli.read.textsafe import printable
 from gacli.cli import app
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from gacli.errors import Diagnostic, Location
-from gacli.loading import load
+from gacli.loader.loading import load
 
 ROOT = Path(__file__).resolve().parent.parent
 SYSTEMS = ROOT / "systems"

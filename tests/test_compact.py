@@ -1,6 +1,6 @@
 """Systems written with frames and rolling print about as compactly as by hand, and mean the same.
 
-The reductions that make them short (:mod:`gacli.trig`, rolling rows along
+The reductions that make them short (:mod:`gacli.algebra.trig`, rolling rows along
 the wheel) are checked against the derivation without them, numerically at
 random states: M and F must agree entry for entry.
 """
@@ -14,10 +14,11 @@ import pytest
 import sympy as sp
 from typer.testing import CliRunner
 
-from gacli import frames, trig
+from gacli.loader import frames
+from gacli.algebra import trig
 from gacli.cli import app
-from gacli.equations import derive
-from gacli.loading import load
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load
 
 FRAMES = Path(__file__).resolve().parent / "frames"
 FILES = sorted(FRAMES.glob("*.yaml"))

@@ -16,7 +16,7 @@ import pytest
 from conftest import SYSTEMS, derived
 from gacli.emit.c import emit_c
 from gacli.emit.naming import layout
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from test_emit_python import EXTRA, extra
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
@@ -227,7 +227,7 @@ potential: HUGE*x**2 + M_PIl*x + FP_INT_UPWARD*M_El*I*x + FP_NAN*sinf*cospi*fmin
 @pytest.mark.parametrize("compiler", COMPILERS)
 def test_names_that_math_h_defines_are_renamed(compiler, flags, tmp_path):
     """<math.h> under _GNU_SOURCE or C23 defines HUGE, MAXFLOAT, M_PIl, FP_INT_UPWARD... as macros."""
-    from gacli.loading import loads
+    from gacli.loader.loading import loads
 
     d = derive(loads(MACRO_NAMED))
     source = write_c(d, tmp_path)

@@ -25,8 +25,8 @@ import pytest
 from conftest import ROOT, SYSTEMS, require_tool
 from gacli.emit.fmu import emit_fmu, platform_folder
 from gacli.emit.naming import layout
-from gacli.equations import derive
-from gacli.loading import load
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load
 from test_emit_python import EXTRA, extra, write_python
 
 CASES_DIR = ROOT / "tests" / "cases"
@@ -279,8 +279,8 @@ def test_the_fmu_is_the_same_zip_under_any_hash_seed_but_for_its_binary(compiler
 _SOURCE_ONLY = """
 import hashlib, sys
 from gacli.emit.fmu import emit_fmu, platform_folder
-from gacli.equations import derive
-from gacli.loading import load
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load
 (data,) = emit_fmu(derive(load(sys.argv[1])), binary=False).values()
 print(hashlib.sha256(data).hexdigest())
 """

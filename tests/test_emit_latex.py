@@ -14,8 +14,8 @@ import sympy as sp
 
 from gacli.emit.latex import emit_latex
 from gacli.emit.latex_printer import GacliLatexPrinter, latex_names, split_rate
-from gacli.equations import derive
-from gacli.loading import load, loads
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load, loads
 
 ROOT = Path(__file__).resolve().parent.parent
 SYSTEM_FILES = sorted((ROOT / "systems").glob("*.yaml"))
@@ -172,7 +172,7 @@ def test_deterministic_within_a_process():
 
 def test_deterministic_across_hash_seeds():
     code = (
-        "import sys; from gacli.loading import load; from gacli.equations import derive; "
+        "import sys; from gacli.loader.loading import load; from gacli.mechanics.equations import derive; "
         "from gacli.emit.latex import emit_latex; "
         "sys.stdout.write(''.join(emit_latex(derive(load(sys.argv[1])), standalone=True).values()))"
     )

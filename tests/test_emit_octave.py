@@ -20,8 +20,8 @@ from conftest import SYSTEMS, require_tool
 from gacli.emit import EMITTERS
 from gacli.emit.naming import layout
 from gacli.emit.octave import emit_octave
-from gacli.equations import derive
-from gacli.loading import loads
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import loads
 from test_emit_python import EXTRA, write_python
 from test_generated_numeric import close, derivation, random_states
 

@@ -17,14 +17,14 @@ import pytest
 import sympy as sp
 
 from conftest import SYSTEMS, derived
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.emit import EMITTERS
 from gacli.emit.naming import header_lines, layout
 from gacli.emit.printers import GacliCPrinter, GacliPythonPrinter
 from gacli.emit.python import emit_python
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from gacli.errors import EmitError
-from gacli.loading import loads
+from gacli.loader.loading import loads
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 

@@ -7,8 +7,8 @@ import pytest
 import sympy as sp
 
 from conftest import LARGE, SYSTEMS, derived, evaluate
-from gacli.gibbs import gibbs_coefficients
-from gacli.graph import free_symbols
+from gacli.mechanics.gibbs import gibbs_coefficients
+from gacli.algebra.graph import free_symbols
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 
@@ -100,13 +100,13 @@ def test_terms_that_differ_only_in_mass_share_one_sum_of_masses():
     # A unit partial velocity (a slider) and l·cos(q) reach the same product l·cos(q) in M[q, x]
     # from two bodies; it must be one term with the sum of their masses, and equal the kinetic
     # energy's Hessian (T = ½ Σ m v², computed here independently).
-    from gacli.equations import derive
-    from gacli.loading import loads
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import loads
 
     d = derive(loads("gacli: 1\nname: mixed\nparameters: [m1, m2, l]\ncoordinates: [x, q]\n"
                      "bodies:\n  a: {mass: m1, position: [x + l*sin(q), 0]}\n"
                      "  b: {mass: m2, position: [l*x + sin(q), 0]}\n"))
-    from gacli import symbols as S
+    from gacli.algebra import symbols as S
 
     m1, m2, l, q = (S.value(n) for n in ("m1", "m2", "l", "q"))
     dx, dq = S.rate("x"), S.rate("q")

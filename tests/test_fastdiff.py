@@ -1,11 +1,11 @@
-"""The memoised derivatives of gacli.fastdiff: the expressions SymPy's own constructors would give."""
+"""The memoised derivatives of gacli.algebra.fastdiff: the expressions SymPy's own constructors would give."""
 
 from __future__ import annotations
 
 import sympy as sp
 
-from gacli import fastdiff
-from gacli.fastdiff import Differentiator, jacobian
+from gacli.algebra import fastdiff
+from gacli.algebra.fastdiff import Differentiator, jacobian
 
 q1, q2, q3, l1, l2, t = sp.symbols("q1 q2 q3 l1 l2 t", real=True)
 EXPRESSIONS = [

@@ -53,7 +53,7 @@ def test_the_schema_is_stable_json():
     assert schema_text() == schema_text()
 
 
-# -- in step with gacli.schema (the reader) ---------------------------------------------------
+# -- in step with gacli.read.schema (the reader) ---------------------------------------------------
 
 def properties(definition: dict) -> set[str]:
     found = set(definition.get("properties", {}))

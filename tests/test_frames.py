@@ -164,8 +164,8 @@ def test_differential_drive_against_kane(rng):
 def test_rolling_disk_in_frames_equals_format_1(rng):
     """The frame vocabulary derives what the hand-written format-1 file states."""
     from conftest import ROOT
-    from gacli.equations import derive
-    from gacli.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.loader.loading import load
 
     by_hand = derive(load(ROOT / "tests" / "cases" / "rolling_disk_format1.yaml"))
     derived_ = derived("rolling_disk")
@@ -178,7 +178,7 @@ def test_rolling_disk_in_frames_equals_format_1(rng):
 
 def test_vectors_in_frames_are_the_matrix_products_exactly():
     """in_inertial skips Matrix for speed; its entries must be the very expressions Matrix forms."""
-    from gacli import frames as F
+    from gacli.loader import frames as F
 
     q, r, a, b = sp.symbols("q r a b", real=True)
     width = 3

@@ -19,7 +19,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from conftest import SYSTEMS, derived, evaluate
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.emit.naming import layout
 from test_emit_c import COMPILERS, CLibrary, compile_c
 from test_emit_python import EXTRA, extra, write_python

@@ -62,8 +62,8 @@ def test_output_holds_no_absolute_path():
 _SCRIPT = """
 import hashlib, json, pathlib
 from gacli.emit import EMITTERS
-from gacli.equations import derive
-from gacli.loading import load
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load
 out = {}
 for path in sorted(pathlib.Path(%r).glob("*.yaml")):
     d = derive(load(path))

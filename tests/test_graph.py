@@ -1,10 +1,10 @@
-"""Walks over distinct subexpressions (gacli.graph), checked against SymPy's tree walks."""
+"""Walks over distinct subexpressions (gacli.algebra.graph), checked against SymPy's tree walks."""
 
 from __future__ import annotations
 
 import sympy as sp
 
-from gacli.graph import free_symbols, postorder, shared_subexpressions
+from gacli.algebra.graph import free_symbols, postorder, shared_subexpressions
 
 
 def _nested(depth: int) -> sp.Expr:

@@ -84,7 +84,7 @@ def test_out_of_memory_in_a_step_is_one_located_message(monkeypatch):
     def exhausted(*args, **kwargs):
         raise MemoryError
 
-    monkeypatch.setattr("gacli.equations.derive", exhausted)
+    monkeypatch.setattr("gacli.mechanics.equations.derive", exhausted)
     path = ROOT / "systems" / "particle_in_plane.yaml"
     assert_located_error(run("derive", path), path, "ran out of memory in the step 'loading the declarations")
 
@@ -93,7 +93,7 @@ def test_out_of_memory_anywhere_is_one_message(monkeypatch):
     def exhausted(*args, **kwargs):
         raise MemoryError
 
-    monkeypatch.setattr("gacli.console.sections", exhausted)
+    monkeypatch.setattr("gacli.display.console.sections", exhausted)
     result = run("gibbs", ROOT / "systems" / "particle_in_plane.yaml")
     assert result.exit_code == 1
     assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
@@ -206,10 +206,10 @@ def test_a_link_to_another_file_is_not_quoted_whole(tmp_path: Path):
 
 @pytest.mark.parametrize("name", ["rolling_disk", "spinning_top", "particle_in_plane"])
 def test_gibbs_entries_are_the_derivatives_of_g(name: str):
-    """Term-by-term differentiation (gacli.gibbs.gibbs_entries) equals differentiating the whole of G."""
+    """Term-by-term differentiation (gacli.mechanics.gibbs.gibbs_entries) equals differentiating the whole of G."""
     import sympy as sp
 
-    from gacli.gibbs import gibbs_entries
+    from gacli.mechanics.gibbs import gibbs_entries
     from tests.conftest import derived
 
     d = derived(name)

@@ -18,8 +18,8 @@ from gacli.cli import app
 from gacli.emit.c import comment_text, emit_c
 from gacli.emit.printers import GacliCPrinter, GacliPythonPrinter
 from gacli.emit.python import emit_python
-from gacli.equations import derive
-from gacli.loading import load, loads
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load, loads
 from gacli.numeric import sample_parameters, unphysical
 from gacli.errors import SystemFileError
 

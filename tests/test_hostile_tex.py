@@ -23,8 +23,8 @@ from conftest import require_tool
 from gacli.cli import app
 from gacli.emit.latex import emit_latex
 from gacli.emit.latex_printer import GacliLatexPrinter
-from gacli.equations import derive
-from gacli.loading import loads
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import loads
 
 HOSTILE = Path(__file__).resolve().parent / "hostile"
 TEX_FILES = sorted(HOSTILE.glob("tex_*.yaml"))

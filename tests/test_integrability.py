@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from gacli.check.integrability import classify
 from gacli.numeric import UndefinedValue, evaluate
-from gacli.zero import SIMPLIFY_MAX_OPS, Decision, decide_zero, time_limit
-from gacli.loading import load, loads
+from gacli.numeric.zero import SIMPLIFY_MAX_OPS, Decision, decide_zero, time_limit
+from gacli.loader.loading import load, loads
 
 from conftest import SYSTEMS
 

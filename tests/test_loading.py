@@ -7,9 +7,9 @@ import pytest
 import sympy as sp
 
 from conftest import SYSTEMS
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from gacli.errors import SystemFileError
-from gacli.loading import load, loads
+from gacli.loader.loading import load, loads
 
 
 def sym(name):

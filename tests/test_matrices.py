@@ -1,11 +1,11 @@
-"""The linear solve of the dependent rates (gacli.matrices.solve_linear), against SymPy's inverse."""
+"""The linear solve of the dependent rates (gacli.algebra.matrices.solve_linear), against SymPy's inverse."""
 
 from __future__ import annotations
 
 import pytest
 import sympy as sp
 
-from gacli.matrices import solve_linear
+from gacli.algebra.matrices import solve_linear
 
 
 @pytest.mark.parametrize("size", [2, 3, 4, 5, 6])

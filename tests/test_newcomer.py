@@ -136,7 +136,7 @@ def test_a_wrong_method_lists_the_choices():
 
 
 def test_a_newline_inside_one_problem_stays_escaped(capsys):
-    from gacli import console
+    from gacli.display import console
 
     console.error("2 problems:", ["one\nerror: forged", "two"])
     err = capsys.readouterr().err

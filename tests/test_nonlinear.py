@@ -17,9 +17,9 @@ from scipy.integrate import quad, solve_ivp
 
 from conftest import SYSTEMS
 from gacli.emit import emit_python
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from gacli.errors import SystemFileError
-from gacli.loading import load, loads
+from gacli.loader.loading import load, loads
 
 HEADER = """\
 gacli: 1

@@ -6,8 +6,8 @@ import ast
 
 from conftest import SYSTEMS
 from gacli.api import emit
-from gacli.equations import derive
-from gacli.loading import load
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import load
 
 
 def hostile_copy(tmp_path):

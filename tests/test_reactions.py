@@ -13,7 +13,7 @@ from conftest import derived, require_tool
 from gacli.emit.c import emit_c
 from gacli.emit.naming import layout
 from gacli.emit.python import emit_python
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.reactions import constraint_forces, multipliers_numeric, reaction_system
 
 CASES = ["sphere_on_turntable", "chaplygin_sleigh", "cylinder_in_cylinder"]
@@ -179,10 +179,10 @@ def test_bicycle_reactions_lying_flat_are_an_error_not_numbers(bicycle_module, t
 def test_the_numeric_route_in_generated_python_equals_the_closed_form(name, tmp_path, rng, monkeypatch):
     # The route large systems take, forced on small ones; differential_drive repeats a constraint
     # row (two wheels on one axle), where both give the minimum-norm multipliers.
-    import gacli.readable
+    import gacli.algebra.readable
 
     d = derived(name)
-    monkeypatch.setattr(gacli.readable, "displayable", lambda derivation: False)
+    monkeypatch.setattr(gacli.algebra.readable, "displayable", lambda derivation: False)
     ((file, text),) = emit_python(d, reactions=True).items()
     assert "_K = numpy.zeros" in text
     (tmp_path / file).write_text(text)
@@ -196,9 +196,9 @@ def test_the_numeric_route_in_generated_python_equals_the_closed_form(name, tmp_
 
 
 def test_c_refuses_the_numeric_route_with_repeated_rows(monkeypatch):
-    import gacli.readable
+    import gacli.algebra.readable
     from gacli.errors import EmitError
 
-    monkeypatch.setattr(gacli.readable, "displayable", lambda derivation: False)
+    monkeypatch.setattr(gacli.algebra.readable, "displayable", lambda derivation: False)
     with pytest.raises(EmitError, match="repeated constraint rows"):
         emit_c(derived("differential_drive"), reactions=True)

@@ -7,7 +7,7 @@ from typer.testing import CliRunner
 
 from conftest import LARGE, SYSTEMS, derived
 from gacli.cli import app
-from gacli.readable import TOO_LARGE, displayable
+from gacli.algebra.readable import TOO_LARGE, displayable
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 

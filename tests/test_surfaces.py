@@ -14,8 +14,8 @@ import sympy as sp
 import sympy.physics.mechanics as me
 
 from conftest import derived
-from gacli.equations import derive
-from gacli.loading import loads
+from gacli.mechanics.equations import derive
+from gacli.loader.loading import loads
 from test_frames import close, gacli_accelerations, kane_accelerations
 
 T = me.dynamicsymbols._t

@@ -1,4 +1,4 @@
-"""The math-TeX grammar of latex: overrides (gacli.texsafe), and the names gacli.system_name refuses."""
+"""The math-TeX grammar of latex: overrides (gacli.read.texsafe), and the names gacli.read.system_name refuses."""
 
 from __future__ import annotations
 

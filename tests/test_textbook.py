@@ -131,8 +131,8 @@ def test_sphere_special_case_14_30():
 
 def test_sphere_rates_14_26():
     """a q̈_y = ẍ + Ωẏ + Ω̇y and a q̈_x = −ÿ + Ωẋ + Ω̇x, from the derived rates."""
-    from gacli.gibbs import acceleration_chain
-    from gacli.symbols import time_derivative
+    from gacli.mechanics.gibbs import acceleration_chain
+    from gacli.algebra.symbols import time_derivative
 
     d = derived("sphere_on_turntable")
     s = _sphere_symbols()

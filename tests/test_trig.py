@@ -1,4 +1,4 @@
-"""sin² + cos² = 1 applied angle by angle (gacli.trig): the value never changes, the size does."""
+"""sin² + cos² = 1 applied angle by angle (gacli.algebra.trig): the value never changes, the size does."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from gacli import trig
+from gacli.algebra import trig
 
 a, b, m, r, u = sp.symbols("a b m r u")
 ANGLES = (a, b)

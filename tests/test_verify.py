@@ -12,10 +12,10 @@ import pytest
 import sympy as sp
 from conftest import SYSTEMS, derived
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli import reactions as R
 from gacli import verify as V
-from gacli.loading import loads
+from gacli.loader.loading import loads
 from gacli.numeric.compiled import Compiled
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
@@ -48,7 +48,7 @@ def test_deterministic_and_seeded():
 
 
 def test_independent_route_imports_none_of_the_checked_code():
-    """gacli.verify imports gacli.symbols and gacli.model only: none of the derivation's code."""
+    """gacli.verify imports gacli.algebra.symbols and gacli.model only: none of the derivation's code."""
     import pkgutil
 
     modules = [V] + [importlib.import_module(f"gacli.verify.{m.name}") for m in pkgutil.iter_modules(V.__path__)]
@@ -61,7 +61,7 @@ def test_independent_route_imports_none_of_the_checked_code():
 
 def _imports_none_of_the_checked_code(module):
     tree = ast.parse(inspect.getsource(module))
-    checked = {"gacli.rates", "gacli.motions", "gacli.forces", "gacli.equations", "gacli.gibbs"}
+    checked = {"gacli.mechanics.rates", "gacli.mechanics.motions", "gacli.mechanics.forces", "gacli.mechanics.equations", "gacli.mechanics.gibbs"}
     for node in tree.body:
         if isinstance(node, ast.ImportFrom) and node.module:
             assert node.module not in checked
@@ -82,8 +82,8 @@ def _failing(report) -> str:
 
 def _motions_terms(d, rates):
     """M and F rebuilt from a (possibly wrong) Rates, as equations.py does (eq. 14.19)."""
-    from gacli.forces import generalized_forces
-    from gacli.motions import body_motions
+    from gacli.mechanics.forces import generalized_forces
+    from gacli.mechanics.motions import body_motions
 
     motions = body_motions(d.system, rates)
     Q = generalized_forces(d.system, rates, motions)
@@ -258,7 +258,7 @@ potential: m*g*(l*cos(theta) + s)
 
 
 def test_holonomic_constraint_functions_and_quasi_in_the_work():
-    from gacli.equations import derive
+    from gacli.mechanics.equations import derive
 
     system = loads(TOP_ON_A_SLIDER)
     report = V.verify(system, derive(system), samples=6)
@@ -266,7 +266,7 @@ def test_holonomic_constraint_functions_and_quasi_in_the_work():
 
 
 def test_primitive_quasi_coordinate_in_nothing_is_reported_undetermined():
-    from gacli.equations import derive
+    from gacli.mechanics.equations import derive
 
     system = loads("""
 gacli: 1
@@ -380,7 +380,7 @@ def test_turntable_contact_forces_along_a_trajectory():
 
 def test_reactions_agree_with_the_multipliers_of_the_fundamental_equation():
     """λ from the dependent rates' equations (u̇ = M⁻¹F) = λ from the unreduced linear system."""
-    from gacli.equations import derive
+    from gacli.mechanics.equations import derive
 
     d = derive(loads(TOP_ON_A_SLIDER))
     fundamental = V.fundamental_equations(d.system)

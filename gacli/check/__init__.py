@@ -1,7 +1,7 @@
 """``gacli check``: validate system files the way a CI gate needs.
 
 For each file (:mod:`~gacli.check.run`): read it (within the size, depth and
-alias limits of :mod:`gacli.source`), load it (every expression parsed by the
+alias limits of :mod:`gacli.read.source`), load it (every expression parsed by the
 restricted grammar), derive the equations, classify each constraint and
 quasi-coordinate (:mod:`~gacli.check.integrability`, with the exterior
 calculus of :mod:`~gacli.check.exterior`) and check that M is symmetric, has

@@ -12,10 +12,10 @@ from rich import box
 from rich.table import Table
 from rich.text import Text
 
-from gacli import console
+from gacli.display import console
 from gacli.check.report import CheckReport, FileReport
-from gacli.console import printable
-from gacli.report import rank_note
+from gacli.display.console import printable
+from gacli.display.report import rank_note
 
 _STATUS_STYLE = {"ok": "green", "warning": "yellow", "error": "bold red"}
 

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location
-from gacli.graph import free_symbols
+from gacli.algebra.graph import free_symbols
 from gacli.model import System
 
 

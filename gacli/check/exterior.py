@@ -35,9 +35,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.coerce import as_expr
-from gacli.rates import function_chain
+from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.mechanics.rates import function_chain
 from gacli.model import Body, Form, System
 
 OneForm = dict[str, sp.Expr]

@@ -48,14 +48,14 @@ from functools import partial
 import mpmath
 import sympy as sp
 
-from gacli.coerce import as_expr
+from gacli.algebra.coerce import as_expr
 from gacli.errors import GacliError, Location
 from gacli.check.exterior import Calculus, OneForm, Structure, structures
 from gacli.model import Form, System
 from gacli.numeric import UndefinedValue, evaluate, sample_points
 from gacli.numeric.guarded import DIGITS as _DIGITS
 from gacli.numeric.guarded import RELATIVE_TOLERANCE as _RELATIVE_TOLERANCE
-from gacli.zero import _MIN_VALID_POINTS, _SEED, Decision, decide_zero, time_limit
+from gacli.numeric.zero import _MIN_VALID_POINTS, _SEED, Decision, decide_zero, time_limit
 
 # The set's test needs a basis of the constraints' kernel; sympy's rref can
 # take minutes on the bicycle's rows, and seeded points decide as well.

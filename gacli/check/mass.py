@@ -6,12 +6,12 @@ import numpy as np
 import sympy as sp
 
 from gacli.check.report import MassMatrixCheck
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import Location
-from gacli.graph import free_symbols, postorder
+from gacli.algebra.graph import free_symbols, postorder
 from gacli.model import System
 from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
-from gacli.zero import decide_zero
+from gacli.numeric.zero import decide_zero
 
 PD_SAMPLES = 3
 

@@ -1,7 +1,7 @@
 """``gacli check``: validate system files the way a CI gate needs.
 
 For each file: read it (within the size, depth and alias limits of
-:mod:`gacli.source`), load it (every expression parsed by the restricted
+:mod:`gacli.read.source`), load it (every expression parsed by the restricted
 grammar), derive the equations, classify each constraint and quasi-coordinate
 (:mod:`gacli.check.integrability`) and check that M is symmetric, has no undefined
 entries and is positive definite at a few seeded sample states (when every
@@ -29,7 +29,7 @@ from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
 from gacli.check.paths import expand_paths
 from gacli.check.report import CheckReport, FileReport, MassMatrixCheck
-from gacli.equations import derive
+from gacli.mechanics.equations import derive
 from gacli.errors import (
     DerivationError,
     Diagnostic,
@@ -37,10 +37,10 @@ from gacli.errors import (
     Location,
     SystemFileError,
 )
-from gacli.loading import load_source
-from gacli.report import dependent_rows
+from gacli.loader.loading import load_source
+from gacli.display.report import dependent_rows
 from gacli.read.source import read_source
-from gacli.zero import time_limit
+from gacli.numeric.zero import time_limit
 
 DEFAULT_TIMEOUT = 60.0
 MAX_DIAGNOSTICS = 100  # per file; a file can hold thousands of errors (aliases)

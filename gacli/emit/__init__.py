@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 from gacli.errors import EmitError
 
 if TYPE_CHECKING:
-    from gacli.equations import Derivation
+    from gacli.mechanics.equations import Derivation
 
 Emitter = Callable[..., dict[str, str]]
 

@@ -20,10 +20,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.emit.naming import Entry, Layout
 from gacli.emit.printers import CSE_PREFIX, Block, print_block
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 
 # The parts a generated function may compute, in the order its block computes them.
 PARTS = ("qdot", "M", "M_lower", "F")
@@ -121,7 +121,7 @@ class ReactionSolve:
 
     For systems too large to print, whose symbolic λ (:func:`reaction_equations`)
     would need a solve of equations millions of terms long; K and b are the
-    fundamental equations in all the rates (:class:`gacli.verify.ReactionSystem`).
+    fundamental equations in all the rates (:class:`gacli.reactions.ReactionSystem`).
     """
 
     size: int
@@ -134,7 +134,7 @@ class ReactionSolve:
 
 def reaction_solve(derivation: Derivation) -> ReactionSolve | None:
     """How generated code finds λ numerically; None when :func:`reaction_equations` gives it in closed form."""
-    from gacli.readable import displayable
+    from gacli.algebra.readable import displayable
     from gacli.reactions import reaction_system
 
     if displayable(derivation):

@@ -30,9 +30,9 @@ import sympy as sp
 from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
 from gacli.emit.naming import Entry, Layout, header_lines, layout
 from gacli.emit.printers import GacliCPrinter, print_block
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import EmitError
-from gacli.readable import displayable
+from gacli.algebra.readable import displayable
 
 INDENT = "    "
 

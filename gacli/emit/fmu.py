@@ -38,7 +38,7 @@ from gacli.emit.c import emit_c
 from gacli.emit.fmu_c import wrapper
 from gacli.emit.fmu_xml import guid_from, model_description, variables
 from gacli.emit.naming import header_lines, layout
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import EmitError
 
 # The flags the brief of the FMU names: a position-independent shared library of C99.

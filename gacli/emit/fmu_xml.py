@@ -20,10 +20,11 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 
-from gacli import symbols as S
-from gacli.coerce import as_expr
-from gacli.emit.naming import Layout, one_line
-from gacli.equations import Derivation
+from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.emit.naming import Layout
+from gacli.read.textsafe import one_line
+from gacli.mechanics.equations import Derivation
 from gacli.errors import EmitError
 
 

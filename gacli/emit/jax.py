@@ -28,7 +28,7 @@ from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import GacliJaxPrinter
 from gacli.emit.python import FUNCTION  # the same def line and docstring as the NumPy module
 from gacli.emit.python import python_dict as _dict, python_tuple as _tuple
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import EmitError
 
 INDENT = "    "

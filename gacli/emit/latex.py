@@ -18,7 +18,7 @@ import textwrap
 
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.emit.latex_layout import (
     WIDE,
     ZERO,
@@ -33,11 +33,12 @@ from gacli.emit.latex_layout import (
     typeset_width,
 )
 from gacli.emit.latex_printer import GacliLatexPrinter, printer_for
-from gacli.emit.latex_text import TEXT_LINE, one_line, tex_text
-from gacli.equations import Derivation
-from gacli.gibbs import gibbs_coefficients
+from gacli.emit.latex_text import TEXT_LINE, tex_text
+from gacli.read.textsafe import one_line
+from gacli.mechanics.equations import Derivation
+from gacli.mechanics.gibbs import gibbs_coefficients
 from gacli.model import System
-from gacli.readable import TOO_LARGE, displayable
+from gacli.algebra.readable import TOO_LARGE, displayable
 from gacli.version import __version__
 
 _LABEL = 4  # the room a label ∂G/∂ü takes from the lines of an equation, beyond that of G
@@ -47,12 +48,12 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     r"""The derivation as amsmath source: ``{"<system name>.tex": text}``.
 
     Args:
-        derivation: the result of :func:`gacli.equations.derive`.
+        derivation: the result of :func:`gacli.mechanics.equations.derive`.
         standalone: wrap the blocks in a complete ``article`` document.
-        steps: the worked solution of :mod:`gacli.steps` instead of the results.
+        steps: the worked solution of :mod:`gacli.display.steps` instead of the results.
 
-    >>> from gacli.equations import derive
-    >>> from gacli.loading import loads
+    >>> from gacli.mechanics.equations import derive
+    >>> from gacli.loader.loading import loads
     >>> d = derive(loads("gacli: 1\nname: falling\nparameters: [m, g]\ncoordinates: [z]\n"
     ...                  "bodies: {ball: {mass: m, position: [0, 0, z]}}\npotential: m*g*z\n"))
     >>> text = emit_latex(d)["falling.tex"]

@@ -15,7 +15,7 @@ from typing import NamedTuple
 import sympy as sp
 
 from gacli.emit.latex_printer import GacliLatexPrinter
-from gacli.readable import Tidy
+from gacli.algebra.readable import Tidy
 
 # Rough printed width (in characters of typeset maths) before a sum is broken.
 LINE_WIDTH = 44
@@ -43,7 +43,7 @@ ZERO: list[Term] = [(False, "0")]
 
 
 def tidy(expr: sp.Expr) -> sp.Expr:
-    """The display simplifier that text uses too (:func:`gacli.readable.readable`), within its size bounds."""
+    """The display simplifier that text uses too (:func:`gacli.algebra.readable.readable`), within its size bounds."""
     return Tidy(budget=sys.maxsize)(expr)
 
 

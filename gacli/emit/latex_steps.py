@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.emit.latex_layout import ZERO, Section, signed_terms, sum_rows
 from gacli.emit.latex_printer import GacliLatexPrinter, latex_names, printer_for
 from gacli.emit.latex_text import tex_text
-from gacli.equations import Derivation
-from gacli.steps import variation, worked_solution
+from gacli.mechanics.equations import Derivation
+from gacli.display.steps import variation, worked_solution
 
 
 def step_sections(derivation: Derivation) -> list[Section]:

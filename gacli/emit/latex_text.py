@@ -10,6 +10,8 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from gacli.read.textsafe import one_line
+
 # Characters of free text (a title, a source) on one line of the .tex file.
 TEXT_LINE = 240
 
@@ -27,11 +29,6 @@ _GREEK_COMMANDS = frozenset(
 )
 _ACCENTS = {"\u0307": ".", "\u0300": "`", "\u0301": "'", "\u0302": "^", "\u0303": "~", "\u0304": "=", "\u0306": "u",
             "\u0308": '"', "\u030a": "r", "\u030c": "v", "\u0327": "c"}
-
-
-def one_line(text: str) -> str:
-    """One line of printable characters: a newline in a comment would start live TeX."""
-    return " ".join("".join(c if c.isprintable() else " " for c in text).split())
 
 
 def tex_text(text: str) -> str:

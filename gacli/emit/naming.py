@@ -42,8 +42,8 @@ Each entry has three spellings:
 
 Example:
 
->>> from gacli.loading import loads
->>> from gacli.equations import derive
+>>> from gacli.loader.loading import loads
+>>> from gacli.mechanics.equations import derive
 >>> lay = layout(derive(loads('''
 ... gacli: 1
 ... name: falling
@@ -70,11 +70,12 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.coerce import as_expr
-from gacli.equations import Derivation
+from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.mechanics.equations import Derivation
 from gacli.emit.math_h import RESERVED_PREFIXES, is_math_h_name
 from gacli.errors import EmitError
+from gacli.read.textsafe import one_line
 
 # The names the generated functions and modules use themselves.
 GENERATED_NAMES = frozenset({
@@ -231,7 +232,7 @@ def layout(derivation: Derivation, reserved: Iterable[str] = ()) -> Layout:
 
 
 def _used_symbols(derivation: Derivation) -> set[sp.Symbol]:
-    from gacli.graph import free_symbols
+    from gacli.algebra.graph import free_symbols
 
     # M's nonzero entries only: a wide system's M is k² entries, nearly all zero.
     exprs = [*derivation.mass_matrix.todok().values(), *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
@@ -378,12 +379,3 @@ def header_lines(derivation: Derivation, fmt: str) -> list[str]:
         f"sha256({source}) = {system.sha256}",
         title,
     ]
-
-
-def one_line(text: str) -> str:
-    """Free text for a comment: one line, printable characters only.
-
-    A file name or title with a newline must not start a line of live code
-    in a generated file.
-    """
-    return " ".join("".join(c if c.isprintable() else " " for c in text).split())

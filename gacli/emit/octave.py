@@ -26,7 +26,7 @@ from string import Template
 from gacli.emit.assembly import Assembly, assemble
 from gacli.emit.naming import Layout, header_lines, layout
 from gacli.emit.printers import GacliOctavePrinter
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 from gacli.errors import EmitError
 
 INDENT = "  "

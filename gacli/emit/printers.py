@@ -29,8 +29,8 @@ from sympy.printing.numpy import JaxPrinter
 from sympy.printing.octave import OctaveCodePrinter
 from sympy.printing.pycode import PythonCodePrinter
 
-from gacli.coerce import as_expr
-from gacli.graph import free_symbols, is_large, shared_subexpressions
+from gacli.algebra.coerce import as_expr
+from gacli.algebra.graph import free_symbols, is_large, shared_subexpressions
 from gacli.errors import EmitError
 
 # What generated code may depend on.

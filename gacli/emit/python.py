@@ -29,7 +29,7 @@ import sympy as sp
 from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
 from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
-from gacli.equations import Derivation
+from gacli.mechanics.equations import Derivation
 
 INDENT = "    "
 

@@ -16,7 +16,7 @@ from collections.abc import Callable, Mapping, Sequence
 import mpmath
 import sympy as sp
 
-from gacli.graph import is_large, shared_subexpressions
+from gacli.algebra.graph import is_large, shared_subexpressions
 from gacli.numeric.evaluator import MPMATH, Program
 
 
@@ -71,7 +71,7 @@ def _shared(expr: sp.Expr) -> tuple[list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
 
     The bicycle's energy is millions of nodes as a tree; lambdify walks and
     prints the tree, so it is handed the few thousand distinct subexpressions
-    as assignments instead (gacli.graph).
+    as assignments instead (gacli.algebra.graph).
     """
     if not is_large(expr):
         return [], expr

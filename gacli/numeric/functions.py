@@ -1,7 +1,7 @@
 """The one table of functions the numeric evaluator knows, per backend.
 
 The grammar admits sin … tanh, exp, log, sqrt, abs, sign and atan2
-(:mod:`gacli.expr.build`); differentiation adds Heaviside and DiracDelta
+(:mod:`gacli.read.expr.build`); differentiation adds Heaviside and DiracDelta
 (from abs and sign) and simplification can add cot, sec and csc. A backend
 without an entry refuses the function: complex arithmetic has no Abs or
 sign, because the complex step of :mod:`gacli.linearize` needs functions

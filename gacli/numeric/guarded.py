@@ -12,7 +12,7 @@ from collections.abc import Mapping
 import mpmath
 import sympy as sp
 
-from gacli.coerce import as_expr
+from gacli.algebra.coerce import as_expr
 from gacli.numeric.backends import RELATIVE_TOLERANCE, UndefinedValue
 from gacli.numeric.evaluator import GUARDED, Program
 

@@ -14,7 +14,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.numeric.evaluator import Program
 from gacli.numeric.guarded import UndefinedValue, evaluate
 

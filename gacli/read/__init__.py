@@ -7,5 +7,5 @@ without ``eval``, and its translation to SymPy). Beside them: what free text
 (``textsafe``) and ``latex:`` overrides (``texsafe``) may contain, the rules
 for a system's name (``system_name``), imaginary values found where they are
 read (``imaginary``), and the JSON Schema of the format (``file_schema``).
-:mod:`gacli.loading` puts these together into a :class:`gacli.model.System`.
+:mod:`gacli.loader.loading` puts these together into a :class:`gacli.model.System`.
 """

@@ -24,7 +24,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
-from gacli.graph import postorder
+from gacli.algebra.graph import postorder
 from gacli.numeric import Program, sample_points
 
 SAMPLES = 3          # unsigned points, and as many of either sign

@@ -1,7 +1,7 @@
 """The shape of a system file: the keys each place may have, and the records they are read into.
 
 No SymPy and no logic here: expressions stay text (a located
-:class:`~gacli.read.source.Scalar`) until :mod:`gacli.loading` builds them.
+:class:`~gacli.read.source.Scalar`) until :mod:`gacli.loader.loading` builds them.
 The records are filled by :func:`gacli.read.declarations.read_declarations`
 and the ``declare_*`` modules beside it; :mod:`gacli.read.file_schema` (the
 JSON Schema for editors) is held to these key lists by the tests.

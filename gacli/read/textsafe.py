@@ -43,3 +43,12 @@ def shortened(text: str, limit: int = MAX_QUOTED) -> str:
 def quoted(text: str) -> str:
     """A message, place or hint that quotes a file: shortened, then made printable."""
     return printable(shortened(text))
+
+
+def one_line(text: str) -> str:
+    """Free text for a comment in a generated file: one line, printable characters only.
+
+    A file name or title with a newline must not start a line of live code
+    (or live TeX) in a generated file.
+    """
+    return " ".join("".join(c if c.isprintable() else " " for c in text).split())

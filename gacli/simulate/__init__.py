@@ -15,7 +15,7 @@ command line (``SimulationSpec``) or from the system file:
                                symbolic derivatives
     --input     inputs         expressions in t, parameters and the state
 
-Every expression goes through gacli's own grammar (:mod:`gacli.expr`), never
+Every expression goes through gacli's own grammar (:mod:`gacli.read.expr`), never
 ``eval``. Along the computed path the report measures (docs/simulate.md):
 
 * the drift of the energy E = Σ ½ m v·v + ½ ω·Iω + V when the system

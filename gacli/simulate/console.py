@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterator
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
-from gacli.console import printable, stderr, stdout
+from gacli.display.console import printable, stderr, stdout
 from gacli.simulate.results import Simulation, summary_lines
 
 

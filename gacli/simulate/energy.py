@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.coerce import as_expr
-from gacli.equations import Derivation
-from gacli.graph import free_symbols
+from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.mechanics.equations import Derivation
+from gacli.algebra.graph import free_symbols
 
 _FD_FRACTION = 0.01          # finite-difference step, as a fraction of the solver's step
 

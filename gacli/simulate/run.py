@@ -13,9 +13,9 @@ from types import ModuleType
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.coerce import as_expr
-from gacli.equations import Derivation
+from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.mechanics.equations import Derivation
 from gacli.numeric.compiled import scalar, vectorized
 from gacli.simulate.energy import conservation_problems, energy_expressions, path_rates
 from gacli.simulate.results import ConstraintResidual, Simulation, short
@@ -61,7 +61,7 @@ def simulate(derivation: Derivation, spec: SimulationSpec,
 
 def load_generated(derivation: Derivation) -> ModuleType:
     """Import the generated Python module from a temporary directory, outside sys.modules."""
-    from gacli.api import emit
+    from gacli.emit import emit
 
     files = emit(derivation, "python")
     with tempfile.TemporaryDirectory(prefix="gacli-sim-") as folder:

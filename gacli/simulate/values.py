@@ -9,13 +9,13 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.equations import Derivation
+from gacli.algebra import symbols as S
+from gacli.mechanics.equations import Derivation
 from gacli.read.expr.build import BuildError, Scope, build
 from gacli.read.expr.grammar import Name, ParseError, Rate
 from gacli.read.expr.parser import parse
 from gacli.simulate.spec import MAX_FUNCTION_ORDER, METHODS, Assignments, SimulationSpec
-from gacli.suggest import closest_state
+from gacli.simulate.suggest import closest_state
 
 
 class OptionValues:

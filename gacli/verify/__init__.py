@@ -1,6 +1,6 @@
 """``gacli verify``: check a derivation by an independent route. See docs/verify.md.
 
-The Gibbs-Appell route (:mod:`gacli.equations`) eliminates the dependent
+The Gibbs-Appell route (:mod:`gacli.mechanics.equations`) eliminates the dependent
 rates first (eq. 14.7) and never sees a constraint force. This package
 derives the motion a second way that shares none of that code
 (:mod:`~gacli.verify.fundamental`): the fundamental equation (eq. 14.10)

@@ -14,7 +14,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.model import Form, System
 from gacli.numeric.compiled import Compiled
 
@@ -52,7 +52,7 @@ class FundamentalEquations:
 
 def function_rates(system: System) -> dict[sp.Symbol, sp.Symbol]:
     """Each free function's rate of order o to the next one: d/dt of the free functions."""
-    return {S.rate(f.name, o): S.rate(f.name, o + 1) for f in system.free_functions for o in range(FUNCTION_ORDERS)}
+    return S.function_chain((f.name for f in system.free_functions), FUNCTION_ORDERS)
 
 
 class _Motion:

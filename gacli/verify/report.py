@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import mpmath
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 
 _SCALE_FLOOR = 1e-12      # of the largest entry of the same group, for near-zero entries
 

@@ -16,11 +16,11 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.model import System
 from gacli.numeric import precise_parameter_values, sample_parameters
 from gacli.numeric.compiled import Compiled
-from gacli.readable import displayable
+from gacli.algebra.readable import displayable
 from gacli.verify.fundamental import (
     DEFAULT_SEED, DPS, FUNCTION_ORDERS, column, fundamental_equations, kkt, redundant_relations, solve_least_squares,
 )

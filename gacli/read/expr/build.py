@@ -17,7 +17,7 @@ from fractions import Fraction
 import sympy as sp
 
 from gacli.read.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
-from gacli.symbols import rate_name
+from gacli.algebra.symbols import rate_name
 
 MAX_EXPONENT = 100
 _ADDITIVE = ("+", "-")

@@ -5,7 +5,7 @@ Everything printed for people (text, LaTeX, ``--steps``) goes through
 what a simulator computes.
 
 It does what a careful person does by hand, and nothing that can grow an
-expression: sin² + cos² = 1 angle by angle (:mod:`gacli.trig`, bounded by
+expression: sin² + cos² = 1 angle by angle (:mod:`gacli.algebra.trig`, bounded by
 the number of terms it would distribute), common factors taken out of sums
 (``factor_terms``, which never expands), and, for a quotient that is small,
 cancellation of common factors. SymPy's ``simplify`` is not used: its time
@@ -20,8 +20,8 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from gacli import trig
-from gacli.graph import LARGE_TREE, is_large, is_small
+from gacli.algebra import trig
+from gacli.algebra.graph import LARGE_TREE, is_large, is_small
 
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.

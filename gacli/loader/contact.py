@@ -17,7 +17,7 @@ formed along the plane's axes from the motion relative to the plane, where
 the contact geometry has the same simple form as on z = 0 and the plane's
 own motion cancels wherever it can.
 
-:class:`RollingContacts` is a part of the loader's builder (gacli.loading):
+:class:`RollingContacts` is a part of the loader's builder (gacli.loader.loading):
 it reads frames, points, bodies and expressions through it.
 """
 
@@ -27,13 +27,13 @@ from dataclasses import replace
 
 import sympy as sp
 
-from gacli import frames as F
-from gacli import trig
+from gacli.loader import frames as F
+from gacli.algebra import trig
 from gacli.model import Body, Constraint, Form
-from gacli.rolling_geometry import axle_problem, radius_problem
+from gacli.loader.rolling_geometry import axle_problem, radius_problem
 from gacli.read.reader import did_you_mean
 from gacli.read.schema import RollingDecl
-from gacli.zero import vanishes
+from gacli.numeric.zero import vanishes
 
 # Rolling rows: along a wheel (frames.in_wheel_heading), or a plane's axes for a sphere.
 _WHEEL_ROWS = ("forward", "sideways", "normal")

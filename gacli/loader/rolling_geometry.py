@@ -1,7 +1,7 @@
 """Rolling declarations whose geometry is degenerate, refused before their rows are built.
 
 A wheel of radius 0, a zero axle or an axle along the plane's normal (a
-wheel lying flat) makes :func:`gacli.frames.contact_point` divide by zero
+wheel lying flat) makes :func:`gacli.loader.frames.contact_point` divide by zero
 or put the contact at the centre: the rolling rows then vanish or become
 ``zoo`` and the constraints are lost without a word. Each function returns
 the message of the problem, or "" when there is none.

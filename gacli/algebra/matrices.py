@@ -11,7 +11,7 @@ from collections.abc import Sequence
 import numpy as np
 import sympy as sp
 
-from gacli import trig
+from gacli.algebra import trig
 
 # Ranks are decided at a random configuration (gacli.numeric.samples): a
 # generic rank of a matrix of functions equals its rank at almost every point.

@@ -12,10 +12,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.equations import Derivation
-from gacli import symbols as S
-from gacli.readable import TOO_LARGE, Tidy, displayable, show
-from gacli.symbols import rate_name
+from gacli.mechanics.equations import Derivation
+from gacli.algebra import symbols as S
+from gacli.algebra.readable import TOO_LARGE, Tidy, displayable, show
+from gacli.algebra.symbols import rate_name
 
 
 @dataclass(frozen=True)
@@ -32,7 +32,7 @@ def dependent_rows(d: Derivation) -> tuple[str, ...]:
     """
     if d.rates.constraints_used == len(d.system.constraints):
         return ()
-    from gacli.rates import relation_rows
+    from gacli.mechanics.rates import relation_rows
 
     kept = {where for where, _, _ in relation_rows(d.system)[0]}
     return tuple(w for w in (f"constraints[{i}]" for i in range(len(d.system.constraints))) if w not in kept)
@@ -67,7 +67,7 @@ def rates(d: Derivation, tidy: Tidy) -> Section:
 
 
 def gibbs(d: Derivation, tidy: Tidy) -> Section:
-    from gacli.steps import gibbs_polynomial
+    from gacli.display.steps import gibbs_polynomial
 
     return Section("Gibbs function, acceleration terms (eqs. 14.17, 14.21)",
                    (f"G = {show(gibbs_polynomial(d, tidy))} + ...",))
@@ -79,7 +79,7 @@ def forces(d: Derivation, tidy: Tidy) -> Section:
 
 
 def equations(d: Derivation, tidy: Tidy) -> Section:
-    from gacli.steps import equation_of_motion
+    from gacli.display.steps import equation_of_motion
 
     lines = []
     for s, name in enumerate(d.independent):
@@ -113,8 +113,8 @@ def gibbs_report(d: Derivation) -> tuple[Section, ...]:
 
 
 def steps_report(d: Derivation) -> tuple[Section, ...]:
-    """The worked solution (:mod:`gacli.steps`) as text sections."""
-    from gacli.steps import Equation, worked_solution
+    """The worked solution (:mod:`gacli.display.steps`) as text sections."""
+    from gacli.display.steps import Equation, worked_solution
 
     if not displayable(d):
         return (freedom(d), too_large())

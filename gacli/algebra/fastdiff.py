@@ -22,9 +22,9 @@ from collections.abc import Iterable, Mapping, Sequence
 
 import sympy as sp
 
-from gacli.canonical import mul
-from gacli.coerce import as_expr
-from gacli.graph import postorder
+from gacli.algebra.canonical import mul
+from gacli.algebra.coerce import as_expr
+from gacli.algebra.graph import postorder
 
 _ZERO = sp.S.Zero
 

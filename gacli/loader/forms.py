@@ -3,7 +3,7 @@
 Constraints (eq. 14.1) and quasi-coordinate definitions (eq. 14.2) are read as
 forms linear in the differentials; a constraint nonlinear in the rates is solved
 for the rate it determines (docs/nonlinear.md), a finite one is differentiated.
-:class:`Forms` is a part of :class:`gacli.loading._Builder`: it reads expressions
+:class:`Forms` is a part of :class:`gacli.loader.loading._Builder`: it reads expressions
 and reports through it.
 """
 
@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli import nonlinear as NL
-from gacli import symbols as S
-from gacli import trig
+from gacli.loader import nonlinear as NL
+from gacli.algebra import symbols as S
+from gacli.algebra import trig
 from gacli.read.expr.build import Scope
-from gacli.fastdiff import jacobian_rows
-from gacli.graph import is_small
-from gacli.zero import vanishes
+from gacli.algebra.fastdiff import jacobian_rows
+from gacli.algebra.graph import is_small
+from gacli.numeric.zero import vanishes
 from gacli.model import Constraint, Form, QuasiCoordinate
 from gacli.read.schema import SymbolDecl, VelocityConstraintDecl
 from gacli.read.source import Scalar

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import trig
+from gacli.algebra import trig
 
 AXES = {"x": 0, "y": 1, "z": 2}
 _ZERO = sp.S.Zero

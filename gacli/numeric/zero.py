@@ -17,9 +17,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.coerce import as_expr
+from gacli.algebra.coerce import as_expr
 from gacli.errors import GacliError
-from gacli.graph import is_small
+from gacli.algebra.graph import is_small
 from gacli.numeric.guarded import RELATIVE_TOLERANCE as _RELATIVE_TOLERANCE
 from gacli.numeric.guarded import UndefinedValue, evaluate
 from gacli.numeric.samples import SEED as _SEED

@@ -16,11 +16,11 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from gacli import nonlinear as NL
-from gacli import symbols as S
+from gacli.loader import nonlinear as NL
+from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, SystemFileError
-from gacli.graph import is_small
-from gacli.matrices import nonzero, rank, solve_linear
+from gacli.algebra.graph import is_small
+from gacli.algebra.matrices import nonzero, rank, solve_linear
 from gacli.model import Form, System
 from gacli.numeric.samples import SEED, random_point
 
@@ -280,7 +280,7 @@ def _error(system: System, location, where: str, message: str, hint: str = "") -
 
 def function_chain(system: System) -> dict[sp.Symbol, sp.Symbol]:
     """d/dt of the free functions of time: Omega → dot(Omega) → ddot(Omega) → ..."""
-    return {S.rate(f.name, o): S.rate(f.name, o + 1) for f in system.free_functions for o in range(4)}
+    return S.function_chain(f.name for f in system.free_functions)
 
 
 def configuration_chain(system: System, rates: Rates) -> dict[sp.Symbol, sp.Expr]:

@@ -10,7 +10,7 @@ back as an expression.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 
 import sympy as sp
 
@@ -23,7 +23,7 @@ import sympy as sp
 # the cost, it does not remove it.
 import sympy.tensor.tensor  # noqa: E402, F401
 
-from gacli.fastdiff import Differentiator
+from gacli.algebra.fastdiff import Differentiator
 
 T = sp.Symbol("t", real=True)
 
@@ -66,5 +66,10 @@ def time_derivative(expr: sp.Expr, chain: Mapping[sp.Symbol, sp.Expr]) -> sp.Exp
 
 
 def time_differentiator(chain: Mapping[sp.Symbol, sp.Expr]) -> Differentiator:
-    """d/dt as one memoised walk (see :mod:`gacli.fastdiff`); reuse it for all entries of a matrix."""
+    """d/dt as one memoised walk (see :mod:`gacli.algebra.fastdiff`); reuse it for all entries of a matrix."""
     return Differentiator({T: sp.S.One, **chain})
+
+
+def function_chain(names: Iterable[str], orders: int = 4) -> dict[sp.Symbol, sp.Symbol]:
+    """d/dt of free functions of time up to ``orders`` derivatives: Omega → dot(Omega) → ddot(Omega) → ..."""
+    return {rate(n, o): rate(n, o + 1) for n in names for o in range(orders)}

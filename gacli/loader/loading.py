@@ -14,10 +14,10 @@ from pathlib import Path
 
 import sympy as sp
 
-from gacli.contact import RollingContacts
-from gacli.load_bodies import Geometry
-from gacli.load_forms import Forms
-from gacli import symbols as S
+from gacli.loader.contact import RollingContacts
+from gacli.loader.bodies import Geometry
+from gacli.loader.forms import Forms
+from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.read.expr.build import BuildError, Scope, build
 from gacli.read.expr.grammar import FUNCTIONS, ParseError
@@ -256,7 +256,7 @@ class _Scopes:
         load_values = {**config_values, **{s.name: S.value(s.name) for s in decl.of_kind("input")}}
         load = Scope(load_values, load_rates, {}, _refusals(kinds, "load"), declared, _LOAD_NOTE)
         work = Scope(load_values, load_rates, diffs, _refusals(kinds, "load"), declared, _LOAD_NOTE)
-        chain = {S.rate(f.name, o): S.rate(f.name, o + 1) for f in functions if f.value is None for o in range(4)}
+        chain = S.function_chain(f.name for f in functions if f.value is None)
         return _Scopes(constant, config, form, constraint, load, work, tuple(rated), chain)
 
 

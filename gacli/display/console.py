@@ -67,7 +67,7 @@ def error(message: str, details: Iterable[str] = ()) -> None:
 
 
 def sections(title: str, items) -> None:
-    """Print report sections (gacli.report.Section) to stdout."""
+    """Print report sections (gacli.display.report.Section) to stdout."""
     console = stdout()
     if title:
         console.print(Text(printable(title), style="bold"))

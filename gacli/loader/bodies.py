@@ -2,14 +2,14 @@
 
 Vectors given in frames are turned into inertial components (docs/frames.md);
 a body's rotation forms come from its frame or are given as format-1 forms.
-:class:`Geometry` is a part of :class:`gacli.loading._Builder`.
+:class:`Geometry` is a part of :class:`gacli.loader.loading._Builder`.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-from gacli import frames as F
+from gacli.loader import frames as F
 from gacli.read.expr.build import Scope
 from gacli.model import Body, Force, Form, Torque
 from gacli.read.reader import did_you_mean

@@ -3,7 +3,7 @@
 For a rigid body with centre-of-mass acceleration a, angular velocity ω and
 angular acceleration α (body axes, inertia I about the centre of mass),
 G = ½ M a² + ½ α·Iα + α·(ω × Iω) + terms free of accelerations. The
-equations of motion do not need G (:mod:`gacli.equations` takes ∂G/∂u̇_s
+equations of motion do not need G (:mod:`gacli.mechanics.equations` takes ∂G/∂u̇_s
 directly); it is built here for display and as an independent check.
 """
 
@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.graph import is_small
-from gacli import trig
-from gacli.motions import BodyMotion, motion_velocity
-from gacli.rates import Rates, configuration_chain
+from gacli.algebra import symbols as S
+from gacli.algebra.graph import is_small
+from gacli.algebra import trig
+from gacli.mechanics.motions import BodyMotion, motion_velocity
+from gacli.mechanics.rates import Rates, configuration_chain
 from gacli.model import System
 
 

@@ -25,7 +25,7 @@ import random
 from collections.abc import Sequence
 import sympy as sp
 
-from gacli import symbols as S
+from gacli.algebra import symbols as S
 from gacli.model import RateRelation
 
 _SEED = 20261124

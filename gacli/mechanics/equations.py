@@ -22,15 +22,15 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.canonical import product as canonical_product
+from gacli.algebra import symbols as S
+from gacli.algebra.canonical import product as canonical_product
 from gacli.errors import DerivationError
-from gacli.forces import generalized_forces
-from gacli.gibbs import gibbs_function
-from gacli.matrices import product
-from gacli.motions import BodyMotion, body_motions, motion_context, motion_velocity
-from gacli.rates import Rates, solve_rates
-from gacli import trig
+from gacli.mechanics.forces import generalized_forces
+from gacli.mechanics.gibbs import gibbs_function
+from gacli.algebra.matrices import product
+from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
+from gacli.mechanics.rates import Rates, solve_rates
+from gacli.algebra import trig
 from gacli.model import System
 
 
@@ -320,12 +320,12 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
 
 
 def _reduced(entry: sp.Expr, groups: dict) -> sp.Expr:
-    """``entry`` reduced by sin² + cos² = 1 where its monomials hold a square (see :mod:`gacli.trig`).
+    """``entry`` reduced by sin² + cos² = 1 where its monomials hold a square (see :mod:`gacli.algebra.trig`).
 
     The monomials are at hand as dicts of exponents: reading them costs far
     less than the reduction's own walk of the entry, and a chain of
     pendulums has no square in most entries. Q, added to F, is reduced
-    already (:mod:`gacli.forces`): with no square among the other terms, the
+    already (:mod:`gacli.mechanics.forces`): with no square among the other terms, the
     sum is in normal form too.
     """
     for key, (powers, _) in groups.items():

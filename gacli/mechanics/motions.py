@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.fastdiff import jacobian_rows
-from gacli.matrices import dot, nonzero, product_rows, solve_linear
+from gacli.algebra import symbols as S
+from gacli.algebra.fastdiff import jacobian_rows
+from gacli.algebra.matrices import dot, nonzero, product_rows, solve_linear
 from gacli.model import Body, System
-from gacli.rates import Rates, function_chain, rate_symbols_chain
+from gacli.mechanics.rates import Rates, function_chain, rate_symbols_chain
 
 _ZERO = sp.S.Zero
 

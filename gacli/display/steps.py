@@ -1,7 +1,7 @@
 """The worked solution: section 14.3's four steps, each with its intermediate results.
 
 This is data (prose and equations as SymPy objects), rendered as text by
-:mod:`gacli.report` and as LaTeX by :mod:`gacli.emit.latex`. Expressions are
+:mod:`gacli.display.report` and as LaTeX by :mod:`gacli.emit.latex`. Expressions are
 simplified for reading within a budget of operations per step (deterministic,
 unlike a clock); a step that has spent it shows the rest as derived. Nothing here feeds the
 code emitters.
@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli.equations import Derivation
-from gacli.gibbs import gibbs_entries
-from gacli.motions import motion_acceleration, motion_velocity
-from gacli.readable import STEP_BUDGET_OPS, Tidy
+from gacli.algebra import symbols as S
+from gacli.mechanics.equations import Derivation
+from gacli.mechanics.gibbs import gibbs_entries
+from gacli.mechanics.motions import motion_acceleration, motion_velocity
+from gacli.algebra.readable import STEP_BUDGET_OPS, Tidy
 
 
 @dataclass(frozen=True)

@@ -12,13 +12,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli import symbols as S
-from gacli import trig
-from gacli.fastdiff import jacobian_rows
-from gacli.graph import substitute
-from gacli.matrices import product_rows
-from gacli.motions import BodyMotion
-from gacli.rates import Rates
+from gacli.algebra import symbols as S
+from gacli.algebra import trig
+from gacli.algebra.fastdiff import jacobian_rows
+from gacli.algebra.graph import substitute
+from gacli.algebra.matrices import product_rows
+from gacli.mechanics.motions import BodyMotion
+from gacli.mechanics.rates import Rates
 from gacli.model import System
 
 

@@ -9,7 +9,7 @@ def as_expr(value) -> sp.Basic:
     """A SymPy object from a SymPy object or a Python number, and never from text.
 
     Internal code uses this where it would call ``sympify``: text from a system
-    file is parsed only by :mod:`gacli.expr`, and a string here is a bug.
+    file is parsed only by :mod:`gacli.read.expr`, and a string here is a bug.
     """
     if isinstance(value, sp.Basic):
         return value

@@ -64,7 +64,7 @@ def _reduce(expr: sp.Expr, memo: dict) -> sp.Expr:
 # -- to a polynomial in the sines and cosines ---------------------------------
 
 def monomial_may_square(powers: dict) -> bool:
-    """:func:`_may_square` for a product given as {base: exponent}, as gacli.equations groups terms."""
+    """:func:`_may_square` for a product given as {base: exponent}, as gacli.mechanics.equations groups terms."""
     for base, exp in powers.items():
         if _is_trig(base):
             if not exp.is_Integer or exp >= 2 or exp < 0:

@@ -1,0 +1,1 @@
+"""algebra: see docs/architecture.md."""

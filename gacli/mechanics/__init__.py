@@ -1,0 +1,1 @@
+"""mechanics: see docs/architecture.md."""
