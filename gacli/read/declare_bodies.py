@@ -103,13 +103,8 @@ def _matrix(reader: Reader, node: Sequence, where: str) -> tuple[Scalar, ...]:
 
 def read_loads(reader: Reader, top: dict) -> tuple[LoadDecl, ...]:
     """The ``loads`` list: forces (``at`` a body, a point or a position) and torques (on a ``body``)."""
-    if "loads" not in top:
-        return ()
-    node = top["loads"][1]
-    if isinstance(node, Scalar) and node.kind == "null":
-        return ()
-    if not isinstance(node, Sequence):
-        reader.error(node, "loads", f"expected a list of loads, found {describe(node)}")
+    node = reader.section(top, "loads", Sequence, "a list of loads", null_is_empty=True)
+    if node is None:
         return ()
     loads = [_load(reader, i, item) for i, item in enumerate(node.items)]
     return tuple(load for load in loads if load)

@@ -4,18 +4,15 @@ from __future__ import annotations
 
 import re
 
-from gacli.read.reader import Reader, describe
+from gacli.read.reader import Reader
 from gacli.read.schema import AXIS_NAMES, FRAME_KEYS, ROLLING_KEYS, FrameDecl, PointDecl, RollingDecl
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 
 
 def read_frames(reader: Reader, top: dict) -> tuple[FrameDecl, ...]:
     """The ``frames`` mapping: rotations from a parent (or a ``sequence`` of angles) and an ``origin``."""
-    if "frames" not in top:
-        return ()
-    node = top["frames"][1]
-    if not isinstance(node, Mapping):
-        reader.error(node, "frames", f"expected a mapping of named frames, found {describe(node)}")
+    node = reader.section(top, "frames", Mapping, "a mapping of named frames")
+    if node is None:
         return ()
     frames = [_frame(reader, key, value) for key, value in node.items if reader.name(key, "frames")]
     return tuple(f for f in frames if f)
@@ -89,11 +86,8 @@ def _axis_ok(reader: Reader, axis: Scalar, where: str) -> bool:
 
 def read_points(reader: Reader, top: dict) -> tuple[PointDecl, ...]:
     """The ``points`` mapping: named positions."""
-    if "points" not in top:
-        return ()
-    node = top["points"][1]
-    if not isinstance(node, Mapping):
-        reader.error(node, "points", f"expected a mapping of named points, found {describe(node)}")
+    node = reader.section(top, "points", Mapping, "a mapping of named points")
+    if node is None:
         return ()
     out = []
     for key, value in node.items:
@@ -106,11 +100,8 @@ def read_points(reader: Reader, top: dict) -> tuple[PointDecl, ...]:
 
 def read_rolling(reader: Reader, top: dict) -> tuple[RollingDecl, ...]:
     """The ``rolling`` list: bodies rolling without slipping on the plane z = 0 of a frame."""
-    if "rolling" not in top:
-        return ()
-    node = top["rolling"][1]
-    if not isinstance(node, Sequence):
-        reader.error(node, "rolling", f"expected a list of rolling contacts, found {describe(node)}")
+    node = reader.section(top, "rolling", Sequence, "a list of rolling contacts")
+    if node is None:
         return ()
     out = []
     for i, item in enumerate(node.items):

@@ -85,13 +85,8 @@ def _latex(reader: Reader, node: Node | None, where: str) -> str:
 
 def read_constraints(reader: Reader, top: dict) -> tuple[Scalar, ...]:
     """The ``constraints`` list: expressions, and velocity constraints (``velocity_of`` a point ``along`` a vector)."""
-    if "constraints" not in top:
-        return ()
-    node = top["constraints"][1]
-    if isinstance(node, Scalar) and node.kind == "null":
-        return ()
-    if not isinstance(node, Sequence):
-        reader.error(node, "constraints", f"expected a list of constraints, found {describe(node)}")
+    node = reader.section(top, "constraints", Sequence, "a list of constraints", null_is_empty=True)
+    if node is None:
         return ()
     items = [_constraint(reader, i, item) for i, item in enumerate(node.items)]
     return tuple(item for item in items if item)
@@ -114,11 +109,8 @@ def _constraint(reader: Reader, index: int, node: Node):
 
 def read_independent(reader: Reader, top: dict) -> tuple[Scalar, ...] | None:
     """The names listed under ``independent``; None when the section is absent."""
-    if "independent" not in top:
-        return None
-    node = top["independent"][1]
-    if not isinstance(node, Sequence):
-        reader.error(node, "independent", f"expected a list of names, found {describe(node)}")
+    node = reader.section(top, "independent", Sequence, "a list of names")
+    if node is None:
         return None
     names = [item for i, item in enumerate(node.items) if reader.name(item, f"independent[{i}]")]
     return tuple(names)

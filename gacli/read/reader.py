@@ -29,6 +29,19 @@ class Reader:
     def error(self, node: Node, where: str, message: str, hint: str = "", offset: int | None = None) -> None:
         self.diagnostics.append(Diagnostic(self.source.location(node, offset), message, where, hint))
 
+    def section(self, top: dict, key: str, kind: type, expected: str, null_is_empty: bool = False) -> Node | None:
+        """A top-level section's node when it is a ``kind``; None when it is absent (or null, when that
+        means empty) or of another shape, which is reported as "expected ``expected``"."""
+        if key not in top:
+            return None
+        node = top[key][1]
+        if null_is_empty and isinstance(node, Scalar) and node.kind == "null":
+            return None
+        if not isinstance(node, kind):
+            self.error(node, key, f"expected {expected}, found {describe(node)}")
+            return None
+        return node
+
     def mapping(self, node: Node, where: str, allowed: tuple[str, ...]) -> dict[str, tuple[Scalar, Node]]:
         if not isinstance(node, Mapping):
             self.error(node, where, f"expected a mapping, found {describe(node)}")
