@@ -41,13 +41,11 @@ from gacli.algebra.graph import substitute
 from gacli.model import System
 from gacli.numeric import parameter_values
 from gacli.numeric.compiled import Compiled
-from gacli.algebra.readable import displayable
+from gacli.algebra.readable import displayable, solved_tidy
 from gacli.verify.fundamental import (
     DPS, FundamentalEquations, column, function_rates, fundamental_equations, kkt, kkt_entries, redundant_relations,
 )
 
-_CANCEL_OPS = 3000        # rational cancellation up to this size (operations, not seconds)
-_SIMPLIFY_OPS = 150       # and sympy.simplify up to this size after it
 
 def _multipliers_in_state(derivation) -> tuple[sp.Matrix, FundamentalEquations]:
     """All multipliers λ (constraints, then quasi definitions) in q, u, u̇ and the rest.
@@ -82,14 +80,6 @@ def _multipliers_in_state(derivation) -> tuple[sp.Matrix, FundamentalEquations]:
     return A_dep.T.LUsolve(E_dep), fundamental
 
 
-def _tidy(expr: sp.Expr) -> sp.Expr:
-    """Cancel, then simplify what has become small (a budget in operations, not seconds)."""
-    if sp.count_ops(expr) > _CANCEL_OPS:
-        return expr
-    expr = sp.cancel(expr)
-    return sp.simplify(expr) if sp.count_ops(expr) <= _SIMPLIFY_OPS else expr
-
-
 def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True) -> sp.ImmutableMatrix:
     """The multipliers λ, one per constraint (in file order), as a sympy column.
 
@@ -117,7 +107,7 @@ def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True)
         udot = sp.Matrix(derivation.mass_matrix).LUsolve(sp.Matrix(derivation.forcing))
         lam = lam.xreplace(dict(zip(derivation.speed_rates, udot)))
     if simplify:
-        lam = lam.applyfunc(_tidy)
+        lam = lam.applyfunc(solved_tidy)
     return sp.ImmutableMatrix(lam)
 
 

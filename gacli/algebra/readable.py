@@ -8,9 +8,12 @@ It does what a careful person does by hand, and nothing that can grow an
 expression: sin² + cos² = 1 angle by angle (:mod:`gacli.algebra.trig`, bounded by
 the number of terms it would distribute), common factors taken out of sums
 (``factor_terms``, which never expands), and, for a quotient that is small,
-cancellation of common factors. SymPy's ``simplify`` is not used: its time
-is unbounded in the size of what it tries, and it rewrites ``abs`` and
-``sign`` into ``Piecewise`` that a reader did not write.
+cancellation of common factors. SymPy's ``simplify`` is not used on
+equations: its time is unbounded in the size of what it tries, and it
+rewrites ``abs`` and ``sign`` into ``Piecewise`` that a reader did not write.
+The one exception is :func:`solved_tidy`, for quotients that come out of a
+symbolic solve (the constraint forces), where it runs only on expressions of
+at most 150 operations.
 """
 
 from __future__ import annotations
@@ -88,6 +91,24 @@ def _is_quotient(expr: sp.Expr) -> bool:
 def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
     """Whether multiplying ``expr`` out stays under ``limit`` terms (counted without expanding)."""
     return trig.expanded_terms(expr, limit) <= limit
+
+
+# A symbolically solved quotient (the constraint forces, M⁻¹F put in) is
+# cancelled up to this size, then simplified while it is this small: operations, not seconds.
+SOLVED_CANCEL_OPS = 3000
+SOLVED_SIMPLIFY_OPS = 150
+
+
+def solved_tidy(expr: sp.Expr) -> sp.Expr:
+    """A quotient from a symbolic solve for reading: cancelled, then simplified when small.
+
+    The constraint forces of ``--reactions`` are such quotients; bounded by
+    their size in operations, ``simplify`` cannot run away on them.
+    """
+    if sp.count_ops(expr) > SOLVED_CANCEL_OPS:
+        return expr
+    expr = sp.cancel(expr)
+    return sp.simplify(expr) if sp.count_ops(expr) <= SOLVED_SIMPLIFY_OPS else expr
 
 
 def displayable(d) -> bool:
