@@ -9,14 +9,13 @@ from __future__ import annotations
 
 import contextlib
 import os
-import re
 from collections.abc import Iterable, Iterator
 
 from rich.console import Console
 from rich.text import Text
 
 from gacli.errors import Diagnostic
-from gacli.read.textsafe import MAX_QUOTED, printable, quoted, shortened  # noqa: F401  (re-exported)
+from gacli.read.textsafe import printable, quoted  # noqa: F401  (printable is re-exported)
 
 
 def _width() -> int | None:
