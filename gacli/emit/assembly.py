@@ -23,6 +23,7 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.emit.naming import Entry, Layout
 from gacli.emit.printers import CSE_PREFIX, Block, print_block
+from gacli.errors import EmitError
 from gacli.mechanics.equations import Derivation
 
 # The parts a generated function may compute, in the order its block computes them.
@@ -61,6 +62,13 @@ class Assembly:
     def read_entries(self, lay: Layout, vector: str) -> list[Entry]:
         """The entries of one vector that the code reads, in their order."""
         return [e for e in vector_entries(lay, vector) if e.symbol in self.block.symbols]
+
+
+def refuse_reactions(reactions: bool) -> None:
+    """The targets other than Python and C have no reactions() function: say so, for API callers
+    (the command line refuses the option before deriving)."""
+    if reactions:
+        raise EmitError("the constraint forces are generated for Python and C only; leave out --reactions")
 
 
 def vector_entries(lay: Layout, vector: str) -> tuple[Entry, ...]:

@@ -23,13 +23,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from string import Template
 
-from gacli.emit.assembly import Assembly, assemble
+from gacli.emit.assembly import Assembly, assemble, refuse_reactions
 from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import GacliJaxPrinter
 from gacli.emit.python import FUNCTION  # the same def line and docstring as the NumPy module
 from gacli.emit.python import python_dict as _dict, python_tuple as _tuple
 from gacli.mechanics.equations import Derivation
-from gacli.errors import EmitError
 
 INDENT = "    "
 NP = "jax.numpy"
@@ -74,8 +73,7 @@ def emit_jax(derivation: Derivation, *, reactions: bool = False) -> dict[str, st
     Raises:
         EmitError: when an expression has no JAX rendering, or for ``reactions``.
     """
-    if reactions:
-        raise EmitError("the constraint forces are generated for Python and C only; leave out --reactions")
+    refuse_reactions(reactions)
     lay = layout(derivation, reserved={"jax", "qdot", "u_dot"})
     functions = [_mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay)]
     text = MODULE.substitute(

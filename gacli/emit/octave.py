@@ -23,11 +23,10 @@ import re
 from collections.abc import Sequence
 from string import Template
 
-from gacli.emit.assembly import Assembly, assemble
+from gacli.emit.assembly import Assembly, assemble, refuse_reactions
 from gacli.emit.naming import Layout, header_lines, layout
 from gacli.emit.printers import GacliOctavePrinter
 from gacli.mechanics.equations import Derivation
-from gacli.errors import EmitError
 
 INDENT = "  "
 
@@ -66,8 +65,7 @@ def emit_octave(derivation: Derivation, *, reactions: bool = False) -> dict[str,
     Raises:
         EmitError: when an expression has no Octave rendering, or for ``reactions``.
     """
-    if reactions:
-        raise EmitError("the constraint forces are generated for Python and C only; leave out --reactions")
+    refuse_reactions(reactions)
     lay = layout(derivation, reserved=OCTAVE_RESERVED | {f"{derivation.system.name}_indices"})
     header = "\n".join(f"% {line}" for line in header_lines(derivation, "octave"))
     files = {

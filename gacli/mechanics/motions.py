@@ -114,16 +114,21 @@ def point_motion(position, system: System, rates: Rates, context: MotionContext 
 
 
 def motion_velocity(motion: Motion, speeds: Sequence[sp.Symbol]) -> list[sp.Expr]:
-    """partials · u + velocity0, from the nonzero partials only (a body of a wide system moves few speeds)."""
-    terms: list[list[sp.Expr]] = [[] for _ in range(motion.partials.rows)]
-    for (i, j), p in sorted(motion.partials.todok().items()):
-        terms[i].append(p * speeds[j])
-    return [sp.Add(*t, v0) for t, v0 in zip(terms, motion.velocity0)]
+    """partials · u + velocity0 (eq. 14.6)."""
+    return _along_partials(motion.partials, speeds, motion.velocity0)
 
 
 def motion_acceleration(motion: Motion, speed_rates: Sequence[sp.Symbol]) -> list[sp.Expr]:
-    """partials · u̇ + acceleration_rest (eq. 14.14), from the nonzero partials only."""
-    return motion_velocity(Motion(motion.partials, motion.acceleration_rest, motion.acceleration_rest), speed_rates)
+    """partials · u̇ + acceleration_rest (eq. 14.14)."""
+    return _along_partials(motion.partials, speed_rates, motion.acceleration_rest)
+
+
+def _along_partials(partials, symbols: Sequence[sp.Symbol], rest) -> list[sp.Expr]:
+    """partials · symbols + rest, from the nonzero partials only (a body of a wide system moves few speeds)."""
+    terms: list[list[sp.Expr]] = [[] for _ in range(partials.rows)]
+    for (i, j), p in sorted(partials.todok().items()):
+        terms[i].append(p * symbols[j])
+    return [sp.Add(*t, r) for t, r in zip(terms, rest)]
 
 
 def _motion(partials: list[list[sp.Expr]], velocity0: list[sp.Expr], rest: list[sp.Expr]) -> Motion:
