@@ -22,9 +22,13 @@ from gacli.loader.loading import load
 
 FRAMES = Path(__file__).resolve().parent / "frames"
 FILES = sorted(FRAMES.glob("*.yaml"))
+SYSTEMS = Path(__file__).resolve().parent.parent / "systems"
+# Issue #17: every system in systems/ prints under 5,000 characters, the bicycle
+# aside (its limit is in docs/readable.md).
+PRINTED = FILES + sorted(p for p in SYSTEMS.glob("*.yaml") if p.stem != "whipple_bicycle")
 
 
-@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", PRINTED, ids=lambda p: p.stem)
 def test_printed_in_under_5000_characters(path):
     result = CliRunner().invoke(app, ["derive", str(path)])
     assert result.exit_code == 0, result.output
@@ -39,7 +43,7 @@ def _unreduced(path: Path, monkeypatch):
         return derive(load(path))
 
 
-@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", FILES + [SYSTEMS / "routh_sphere.yaml"], ids=lambda p: p.stem)
 def test_reductions_change_no_value(path, monkeypatch, rng):
     reduced, plain = derive(load(path)), _unreduced(path, monkeypatch)
     assert reduced.independent == plain.independent

@@ -29,6 +29,7 @@ import sympy as sp
 
 from gacli.loader import frames as F
 from gacli.algebra import trig
+from gacli.algebra.graph import is_small
 from gacli.model import Body, Constraint, Form
 from gacli.loader.rolling_geometry import axle_problem, radius_problem
 from gacli.read.reader import did_you_mean
@@ -38,6 +39,7 @@ from gacli.numeric.zero import vanishes
 # Rolling rows: along a wheel (frames.in_wheel_heading), or a plane's axes for a sphere.
 _WHEEL_ROWS = ("forward", "sideways", "normal")
 _EXPAND_OPS = 60  # row entries up to this size are expanded so that the offset's terms cancel
+_REDUCED_NODES = 600  # larger row entries are kept as formed (a steered wheel's: nested products)
 
 
 class RollingContacts:
@@ -102,7 +104,7 @@ class RollingContacts:
         position = sp.Matrix(body.position)
         rows = F.rolling_rows(self._velocity_form(body.position), sp.Matrix(frame.dcm) * sp.Matrix(frame.omega),
                               contact - position, moving)
-        return F.in_wheel_heading(rows, axle)
+        return F.in_wheel_heading(rows, axle).applyfunc(_shorter)
 
     def _relative_rows(self, body: Body, frame: F.Frame, surface: F.Frame, plane: sp.Matrix,
                        centre: sp.Matrix, below: sp.Matrix) -> sp.Matrix:
@@ -192,6 +194,16 @@ def _cancelled(entry: sp.Expr) -> sp.Expr:
     if sp.count_ops(entry) <= _EXPAND_OPS:
         entry = sp.expand(entry)
     return trig.reduce(entry)
+
+
+def _shorter(entry: sp.Expr) -> sp.Expr:
+    """:func:`_cancelled` where that shortens the entry (an unbalanced sphere's rows lose
+    sin² + cos² of the spin), else the entry as formed: a steered wheel's rows, multiplied
+    out, are longer than their nested products."""
+    if not is_small(entry, _REDUCED_NODES):
+        return entry
+    cancelled = _cancelled(entry)
+    return cancelled if sp.count_ops(cancelled) < sp.count_ops(entry) else entry
 
 
 def _axis_names(surface: F.Frame, plane: sp.Matrix | None) -> tuple[str, str, str]:
