@@ -85,3 +85,41 @@ def test_expanded_terms_counts_without_expanding(expr, limit, expected):
         assert count > limit
     else:
         assert count == len(sp.Add.make_args(sp.expand(expr)))
+
+
+def _reduced_without_count(expr: sp.Expr) -> sp.Expr:
+    """trig.reduce as it was before the count: distribute until a bound is met."""
+    try:
+        return trig._reduce(expr, {trig._WORK: 0})
+    except trig._TooLarge:
+        return expr
+
+
+nested = st.lists(expressions, min_size=1, max_size=4).map(
+    lambda parts: sp.Mul(*[p if i % 2 else (p + 1) ** 2 for i, p in enumerate(parts)])
+    + sp.sqrt(sp.Add(*parts) ** 2 + 1))
+
+
+@settings(max_examples=200, deadline=None)
+@given(nested)
+def test_the_count_refuses_exactly_what_distributing_would(expr):
+    # The count walks instead of multiplying; it must agree with the walk that
+    # multiplies on every expression, those just past the bounds included.
+    assert trig.reduce(expr) == _reduced_without_count(expr)
+
+
+def test_the_count_refuses_a_product_past_the_bound():
+    s = sp.Add(*[sp.sin(a) * sp.cos(b) ** i for i in range(50)])
+    expr = s * (s + m) + sp.sqrt(s ** 2 + 1)
+    with pytest.raises(trig._TooLarge):
+        trig._count(expr, {trig._WORK: 0})
+    assert trig.reduce(expr) is expr
+
+
+@pytest.mark.parametrize("n, refused", [(20, False), (42, False), (43, True), (60, True)])
+def test_the_count_and_the_products_agree_at_the_bound(n, refused):
+    # 42 terms squared stay within the work bound (MAX_WORK), 43 do not.
+    s = sp.Add(*[sp.sin(a) ** (i % 3) * sp.cos(a) ** (i // 3) * m ** i for i in range(n)])
+    expr = s ** 2 + sp.sqrt(s * sp.sin(a) + 1)
+    assert trig.reduce(expr) == _reduced_without_count(expr)
+    assert (trig.reduce(expr) is expr) == refused

@@ -43,7 +43,13 @@ class _TooLarge(Exception):
 
 def reduce(expr: sp.Expr) -> sp.Expr:
     """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap."""
+    if not isinstance(expr, sp.Expr) or not _may_square(expr):
+        return expr
     try:
+        # Counted first: an entry too large to distribute (a bicycle's solved rates)
+        # is refused at the cost of a walk, not of the products formed before the
+        # bound is met, which were half of the bicycle's derivation.
+        _count(expr, {_WORK: 0})
         return _reduce(expr, {_WORK: 0})
     except _TooLarge:
         return expr
@@ -169,6 +175,60 @@ def _distribute_new(expr: sp.Expr, memo: dict) -> Poly:
         # Not a polynomial in the sines and cosines (a quotient, a root): reduce inside it.
         expr = expr.func(*[_reduce(a, memo) if isinstance(a, sp.Expr) else a for a in expr.args])
     return {frozenset(): [expr]}
+
+
+def _count(expr: sp.Expr, memo: dict) -> int:
+    """The terms :func:`_distribute` would form for ``expr``, raising _TooLarge where it would.
+
+    The same walk with counts for polynomials: the same memo of distinct
+    subexpressions, the same work added at each product, the same bounds,
+    and the reductions inside quotients and roots counted as they are made.
+    """
+    known = memo.get(expr)
+    if known is None:
+        known = memo[expr] = _count_new(expr, memo)
+    return known
+
+
+def _count_new(expr: sp.Expr, memo: dict) -> int:
+    if expr.is_Add:
+        return _bounded_count(sum(_count(term, memo) for term in expr.args))
+    if expr.is_Mul:
+        out = 1
+        for factor in expr.args:
+            if factor.has(sp.sin, sp.cos):
+                out = _times_count(out, _count(factor, memo), memo)
+        return out
+    if expr.is_Pow and expr.exp.is_Integer:
+        n = int(expr.exp)
+        if _is_trig(expr.base):
+            return 1
+        if n > 0 and expr.base.is_Add:
+            out, base = 1, _count(expr.base, memo)
+            for _ in range(n):
+                out = _times_count(out, base, memo)
+            return out
+    if _is_trig(expr):
+        return 1
+    if expr.args and not expr.is_Atom:
+        for a in expr.args:
+            if isinstance(a, sp.Expr) and _may_square(a):
+                _count(a, memo)
+    return 1
+
+
+def _times_count(a: int, b: int, memo: dict) -> int:
+    size = a * b
+    memo[_WORK] += size
+    if size > MAX_TERMS or memo[_WORK] > MAX_WORK:
+        raise _TooLarge
+    return _bounded_count(size)
+
+
+def _bounded_count(terms: int) -> int:
+    if terms > MAX_TERMS:
+        raise _TooLarge
+    return terms
 
 
 def _merge(into: Poly, other: Poly) -> None:
