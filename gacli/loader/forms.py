@@ -132,7 +132,18 @@ class Forms:
 
     def _velocity_form(self, position) -> sp.Matrix:
         """d r of a point (inertial components), as a form vector."""
-        return sp.Matrix.vstack(*(self.differential(c) for c in position))
+        # One memoised walk per coordinate for the three components: they share
+        # most of their terms (a wheel's hub through a chain of frames).
+        names = self.scopes.rate_names
+        coordinates = {s.name for s in self.decl.of_kind("coordinate")}
+        moving = [n for n in names if n in coordinates]
+        partials = jacobian_rows(position, [S.value(n) for n in moving])
+        rows = []
+        for c, row in zip(position, partials):
+            by_name = dict(zip(moving, row))
+            rows.append([by_name.get(n, sp.S.Zero) for n in names]
+                        + [S.time_derivative(c, self.scopes.function_chain)])
+        return sp.Matrix(rows)
 
     def _velocity_constraint(self, decl: VelocityConstraintDecl, where: str) -> Constraint | None:
         point = self._point_named(decl.point, f"{where}.velocity_of")
