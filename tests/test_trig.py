@@ -123,3 +123,10 @@ def test_the_count_and_the_products_agree_at_the_bound(n, refused):
     expr = s ** 2 + sp.sqrt(s * sp.sin(a) + 1)
     assert trig.reduce(expr) == _reduced_without_count(expr)
     assert (trig.reduce(expr) is expr) == refused
+
+
+def test_cancel_distributes_what_has_no_square():
+    # After a turn by an angle, terms meet only once multiplied out; no square is there to prompt it.
+    expr = sp.sin(a) * (m * sp.cos(a) + r) - sp.cos(a) * (m * sp.sin(a) + u)
+    assert trig.reduce(expr) is expr
+    assert trig.reduce(expr, cancel=True) == r * sp.sin(a) - u * sp.cos(a)

@@ -41,26 +41,31 @@ class _TooLarge(Exception):
     pass
 
 
-def reduce(expr: sp.Expr) -> sp.Expr:
-    """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap."""
-    if not isinstance(expr, sp.Expr) or not _may_square(expr):
+def reduce(expr: sp.Expr, cancel: bool = False) -> sp.Expr:
+    """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap.
+
+    With ``cancel``, also an expression without squares is distributed, so that
+    terms equal but for the order of their factors cancel (X sin φ cos φ −
+    X cos φ sin φ after a turn by φ).
+    """
+    if not isinstance(expr, sp.Expr) or not (cancel and _holds_trig(expr) or _may_square(expr)):
         return expr
     try:
         # Counted first: an entry too large to distribute (a bicycle's solved rates)
         # is refused at the cost of a walk, not of the products formed before the
         # bound is met, which were half of the bicycle's derivation.
         _count(expr, {_WORK: 0})
-        return _reduce(expr, {_WORK: 0})
+        return _reduce(expr, {_WORK: 0}, cancel)
     except _TooLarge:
         return expr
 
 
-def _reduce(expr: sp.Expr, memo: dict) -> sp.Expr:
-    if not isinstance(expr, sp.Expr) or not _may_square(expr):
+def _reduce(expr: sp.Expr, memo: dict, cancel: bool = False) -> sp.Expr:
+    if not isinstance(expr, sp.Expr) or not (cancel or _may_square(expr)):
         return expr
     poly = _distribute(expr, memo)
     angles = _angles(poly)
-    if not angles:
+    if not angles and not cancel:
         return expr
     for angle in angles:
         poly = min((_eliminate(poly, angle, sp.cos), _eliminate(poly, angle, sp.sin)), key=_size)
@@ -98,6 +103,18 @@ def _may_square(expr: sp.Expr) -> bool:
     except (_TooLarge, RecursionError):
         return False
     return False
+
+
+def _holds_trig(expr: sp.Expr) -> bool:
+    """Whether a sine or cosine is inside ``expr``: one walk over its distinct
+    subexpressions, none past MAX_NODES (``has`` walks the tree, which for a
+    bicycle's equations is millions of nodes)."""
+    try:
+        return bool(_held(expr, {}))
+    except _Square:
+        return True
+    except (_TooLarge, RecursionError):
+        return False
 
 
 class _Square(Exception):

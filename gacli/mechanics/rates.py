@@ -18,6 +18,7 @@ import sympy as sp
 
 from gacli.loader import nonlinear as NL
 from gacli.algebra import symbols as S
+from gacli.algebra import trig
 from gacli.errors import Diagnostic, SystemFileError
 from gacli.algebra.graph import is_small
 from gacli.algebra.matrices import nonzero, rank, solve_linear
@@ -270,8 +271,22 @@ def _solve(A, a0, names, independent, dependent):
 
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
-    """Cancel rational clutter that elimination leaves, while it is cheap."""
-    return sp.cancel(expr) if is_small(expr, 400) else expr
+    """Cancel rational clutter that elimination leaves, while it is cheap.
+
+    ``cancel`` knows no trigonometry: a determinant too large to reduce
+    whole (a four-wheeled robot's) can come out of it as a factor
+    sin² θ + cos² θ of the denominator, which every later product would
+    carry. Numerator and denominator are reduced after it, and cancelled
+    again when that changed them.
+    """
+    if not is_small(expr, 400):
+        return expr
+    cancelled = sp.cancel(expr)
+    numerator, denominator = sp.fraction(cancelled)
+    reduced = trig.reduce(numerator), trig.reduce(denominator)
+    if reduced == (numerator, denominator):
+        return cancelled
+    return sp.cancel(reduced[0] / reduced[1])
 
 
 def _error(system: System, location, where: str, message: str, hint: str = "") -> SystemFileError:
