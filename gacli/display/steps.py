@@ -17,7 +17,7 @@ from gacli.algebra import symbols as S
 from gacli.mechanics.equations import Derivation
 from gacli.mechanics.gibbs import gibbs_entries
 from gacli.mechanics.motions import motion_acceleration, motion_velocity
-from gacli.algebra.readable import STEP_BUDGET_OPS, Tidy
+from gacli.algebra.readable import STEP_BUDGET_OPS, Tidy, show
 
 
 @dataclass(frozen=True)
@@ -110,13 +110,13 @@ def accelerations_and_gibbs(d: Derivation, tidy: Tidy) -> Step:
     for motion in d.motions:
         body = motion.body
         a = [tidy.collected(e, acc) for e in motion_acceleration(motion.linear, acc)]
-        items.append(f"Acceleration of {body.name} (centre of mass), components along the inertial axes:")
+        items.append(f"Acceleration of {body.name} (centre of mass), components along {_linear_axes(motion)}:")
         items.append(Equation(sp.Symbol(f"a_{body.name}"), sp.Matrix([a]).T))
         whole += body.mass / 2 * sum(c**2 for c in a)
         if motion.angular is not None:
             w = motion_velocity(motion.angular, d.speeds)
             alpha = [tidy.collected(e, acc) for e in motion_acceleration(motion.angular, acc)]
-            items.append(f"Angular acceleration of {body.name}, body axes:")
+            items.append(f"Angular acceleration of {body.name}, {_angular_axes(motion)}:")
             items.append(Equation(sp.Symbol(f"alpha_{body.name}"), sp.Matrix([alpha]).T))
             I, al, wv = body.inertia, sp.Matrix(alpha), sp.Matrix([tidy(e) for e in w])
             whole += (al.T * I * al)[0] / 2 + tidy((al.T * wv.cross(I * wv))[0])
@@ -126,6 +126,20 @@ def accelerations_and_gibbs(d: Derivation, tidy: Tidy) -> Step:
     items.append("and without the terms free of accelerations, which do not enter eq. (14.19):")
     items.append(Equation(G, gibbs_polynomial(d, tidy), "14.19"))
     return Step("Step 2b. Accelerations and the Gibbs function", tuple(items))
+
+
+def _linear_axes(motion) -> str:
+    if motion.heading == 0:
+        return "the inertial axes"
+    return f"the inertial axes turned by {show(motion.heading)} about z (a·a is the same in any axes)"
+
+
+def _angular_axes(motion) -> str:
+    if motion.spin is None:
+        return "body axes"
+    axis, angle = motion.spin
+    return (f"body axes turned back by {show(angle)} about {axis}, about which the inertia is symmetric "
+            "(the body's non-spinning axes)")
 
 
 def gibbs_polynomial(d: Derivation, tidy: Tidy) -> sp.Expr:

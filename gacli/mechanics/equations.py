@@ -28,6 +28,7 @@ from gacli.errors import DerivationError
 from gacli.mechanics.forces import generalized_forces
 from gacli.mechanics.gibbs import gibbs_function
 from gacli.algebra.matrices import product
+from gacli.mechanics.axes import turned
 from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
 from gacli.mechanics.rates import Rates, solve_rates
 from gacli.algebra import trig
@@ -152,7 +153,7 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
     rates = solve_rates(system)
     step("velocities and accelerations (14.14)")
     context = motion_context(system, rates)
-    motions = body_motions(system, rates, context)
+    motions = turned(system, body_motions(system, rates, context))
     step("generalized forces (14.13)")
     Q = generalized_forces(system, rates, motions)
     step("Gibbs-Appell equations (14.19)")
@@ -207,12 +208,12 @@ def _mass_matrix_and_forcing(motions: tuple[BodyMotion, ...], rates: Rates, Q: s
                              split=False)
     M = [[sp.S.Zero] * k for _ in range(k)]  # lists: setting matrix entries one by one is slow
     for (i, j), groups in mass_terms.items():
-        M[i][j] = _reduced(_sum_grouped(groups), groups)
+        M[i][j] = _reduced(_sum_grouped(groups), groups, frames)
         if symmetric:
             M[j][i] = M[i][j]
     # A format-1 file's F stays as its author's positions give it (the display reduces it):
     # reducing it there lengthened the generated code of a chain of bodies after CSE.
-    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups) if frames else sp.Add(Q[s], _sum_grouped(groups, -1))
+    F = [_reduced(sp.Add(Q[s], _sum_grouped(groups, -1)), groups, True) if frames else sp.Add(Q[s], _sum_grouped(groups, -1))
          for s, groups in enumerate(rest_terms)]
     return sp.ImmutableMatrix(k, k, [e for row in M for e in row]), sp.ImmutableMatrix(k, 1, F)
 
@@ -319,8 +320,13 @@ def _sum_grouped(groups: dict, sign: int = 1) -> sp.Expr:
     return sp.Add(*out)
 
 
-def _reduced(entry: sp.Expr, groups: dict) -> sp.Expr:
+def _reduced(entry: sp.Expr, groups: dict, cancel: bool = False) -> sp.Expr:
     """``entry`` reduced by sin² + cos² = 1 where its monomials hold a square (see :mod:`gacli.algebra.trig`).
+
+    With ``cancel`` (a system written with frames) it is distributed whenever it
+    holds a sine or cosine: its bodies' motions are along turned axes
+    (:mod:`gacli.mechanics.axes`), where the terms that cancel
+    need no identity, only to meet.
 
     The monomials are at hand as dicts of exponents: reading them costs far
     less than the reduction's own walk of the entry, and a chain of
@@ -328,6 +334,8 @@ def _reduced(entry: sp.Expr, groups: dict) -> sp.Expr:
     already (:mod:`gacli.mechanics.forces`): with no square among the other terms, the
     sum is in normal form too.
     """
+    if cancel:
+        return trig.reduce(entry, cancel=True)
     for key, (powers, _) in groups.items():
         if powers is None or trig.monomial_may_square(powers):
             return trig.reduce(entry)

@@ -17,6 +17,7 @@ from gacli.algebra import trig
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.algebra.graph import substitute
 from gacli.algebra.matrices import product_rows
+from gacli.mechanics.axes import spin_back
 from gacli.mechanics.motions import BodyMotion
 from gacli.mechanics.rates import Rates
 from gacli.model import System
@@ -53,7 +54,13 @@ def _from_forces(system: System, rates: Rates) -> list[list[sp.Expr]]:
 def _from_torques(system: System, motions: tuple[BodyMotion, ...]) -> list[list[sp.Expr]]:
     """T·Ω_s of each torque, one list per torque."""
     by_name = {m.body.name: m for m in motions}
-    return [list(by_name[torque.body].angular.partials.T * sp.Matrix(torque.vector)) for torque in system.torques]
+    out = []
+    for torque in system.torques:
+        motion = by_name[torque.body]
+        # Along the axes the body's Ω is given in (turned back by a wheel's spin): T·Ω is unchanged.
+        vector = spin_back(torque.vector, motion.spin)
+        out.append(list(motion.angular.partials.T * sp.Matrix(vector)))
+    return out
 
 
 def _from_work(system: System, rates: Rates) -> list[sp.Expr]:

@@ -48,14 +48,44 @@ def _body_gibbs(motion: BodyMotion, rates: Rates, d_dt, nonlinear: bool = False)
         # β u + β₀ of a nonlinear rate is f(q, u) written as ∂f/∂u·u + rest (Chetaev's split);
         # put back together it is f again, and its derivative stays as short.
         v = v.applyfunc(lambda e: sp.cancel(e) if is_small(e, 400) else e)
-    a = v.applyfunc(lambda e: trig.reduce(d_dt(e)))
+    a = sp.Matrix([trig.reduce(e) for e in _derivative_in_heading(v, motion.heading, d_dt)])
     G = motion.body.mass * (a.T * a)[0] / 2
     if motion.angular is not None:
         I = motion.body.inertia
         w = sp.Matrix(motion_velocity(motion.angular, rates.speeds))
-        alpha = w.applyfunc(lambda e: trig.reduce(d_dt(e)))
+        alpha = sp.Matrix([trig.reduce(e) for e in _derivative_unspun(w, motion.spin, d_dt)])
         G += (alpha.T * I * alpha)[0] / 2 + (alpha.T * w.cross(I * w))[0]
     return G
+
+
+def _derivative_in_heading(v, heading: sp.Expr, d_dt) -> list[sp.Expr]:
+    """d/dt of a vector given along axes turned by ``heading`` about N's z, along the same axes.
+
+    The transport theorem: the axes turn at ω = (d heading/dt) z, so
+    a = dv/dt + ω × v, with dv/dt taken component by component.
+    """
+    derivative = [d_dt(e) for e in v]
+    if heading == 0:
+        return derivative
+    w = d_dt(heading)
+    return [derivative[0] - w * v[1], derivative[1] + w * v[0], derivative[2]]
+
+
+def _derivative_unspun(w, spin, d_dt) -> list[sp.Expr]:
+    """α from ω given along axes turned back by a spin φ about axis a: dω/dt − φ̇ a × ω.
+
+    With ω' = R ω_B, α' = R ω̇_B = dω'/dt − Ṙ Rᵀ ω', and Ṙ Rᵀ ω' = φ̇ a × ω'.
+    """
+    derivative = [d_dt(e) for e in w]
+    if spin is None:
+        return derivative
+    axis, angle = spin
+    i = "xyz".index(axis)
+    j, k = (i + 1) % 3, (i + 2) % 3
+    rate = d_dt(angle)
+    derivative[j] += rate * w[k]
+    derivative[k] -= rate * w[j]
+    return derivative
 
 
 def gibbs_coefficients(G: sp.Expr, rates: Rates) -> tuple[sp.Matrix, sp.Matrix]:

@@ -14,10 +14,12 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra import trig
 from gacli.algebra.fastdiff import jacobian_rows
+from gacli.algebra.graph import is_small
 from gacli.algebra.matrices import dot, nonzero, product_rows, solve_linear
 from gacli.model import Body, System
-from gacli.mechanics.rates import Rates, function_chain, rate_symbols_chain
+from gacli.mechanics.rates import Rates, configuration_chain, function_chain, rate_symbols_chain
 
 _ZERO = sp.S.Zero
 
@@ -36,9 +38,16 @@ class Motion:
 
 @dataclass(frozen=True)
 class BodyMotion:
+    """A body's motions. ``linear`` is along N's axes turned by ``heading`` about N's z
+    (0: N's own axes); ``angular`` along the body's axes, as its rotation forms give it."""
+
     body: Body
     linear: Motion
     angular: Motion | None
+    heading: sp.Expr = sp.S.Zero
+    # (axis, angle): ``angular`` is along the body's axes turned back by ``angle``
+    # about that body axis, about which the inertia is symmetric (a wheel's spin).
+    spin: tuple[str, sp.Expr] | None = None
 
 
 def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Expr]:
@@ -53,6 +62,9 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     dependent = [n for n in names if n not in rates.independent]
     if not dependent:
         return gamma
+    if not rates.nonlinear and all(is_small(rates.rate(n), _SMALL_RATE) for n in dependent):
+        gamma.update(_differentiated_rates(system, rates, dependent))
+        return gamma
     A, a0 = sp.Matrix(rates.relations), sp.Matrix(rates.relations_dt)
     chain = rate_symbols_chain(system)
     velocity = sp.Matrix([S.rate(n) for n in names])
@@ -64,6 +76,24 @@ def dependent_acceleration_rest(system: System, rates: Rates) -> dict[str, sp.Ex
     solution = solve_linear(Ad, -c)
     gamma.update({n: solution[i] for i, n in enumerate(dependent)})
     return gamma
+
+
+# Solved rates up to this many nodes are differentiated themselves for γ.
+_SMALL_RATE = 300
+
+
+def _differentiated_rates(system: System, rates: Rates, dependent: list[str]) -> dict[str, sp.Expr]:
+    """γ = d/dt(β u + β₀) with u held fixed, for rates small enough to differentiate as solved.
+
+    A robot's solved rates are short (ẋ = r(φ̇_L + φ̇_R) cos θ / 2) where the
+    constraints they come from are not; solving the differentiated
+    constraints again, as for a bicycle, divided by pivots such as cos θ
+    that no identity removes afterwards. The two are equal: both are r̈ at u̇ = 0.
+    """
+    d_dt = S.time_differentiator(configuration_chain(system, rates))
+    return {n: trig.reduce(d_dt(rates.rate(n))) for n in dependent}
+
+
 
 
 @dataclass(frozen=True)
@@ -110,7 +140,7 @@ def point_motion(position, system: System, rates: Rates, context: MotionContext 
     rest = [dot(row, context.coordinate_gamma) + d
             for row, d in zip(rows, _rest_of_derivative(velocity_symbols, context))]
     velocity0 = [v + e for (v,), e in zip(product_rows(rows, b0, 1), explicit)]
-    return _motion(product_rows(rows, b, rates.k), velocity0, rest)
+    return make_motion(product_rows(rows, b, rates.k), velocity0, rest)
 
 
 def motion_velocity(motion: Motion, speeds: Sequence[sp.Symbol]) -> list[sp.Expr]:
@@ -131,7 +161,7 @@ def _along_partials(partials, symbols: Sequence[sp.Symbol], rest) -> list[sp.Exp
     return [sp.Add(*t, r) for t, r in zip(terms, rest)]
 
 
-def _motion(partials: list[list[sp.Expr]], velocity0: list[sp.Expr], rest: list[sp.Expr]) -> Motion:
+def make_motion(partials: list[list[sp.Expr]], velocity0: list[sp.Expr], rest: list[sp.Expr]) -> Motion:
     # Sparse partials: a body of a wide system moves few of the k speeds, and a
     # dense matrix per body would cost k entries each.
     n, k = len(partials), len(partials[0]) if partials else 0
@@ -159,7 +189,7 @@ def rotation_motion(rotation, system: System, rates: Rates, context: MotionConte
     rest = [dot(row, gamma) + d for row, d in zip(W, _rest_of_derivative(omega_symbols, context))]
     b, b0 = rates.row_lists(names)
     velocity0 = [v + w0 for (v,), w0 in zip(product_rows(W, b0, 1), W0)]
-    return _motion(product_rows(W, b, rates.k), velocity0, rest)
+    return make_motion(product_rows(W, b, rates.k), velocity0, rest)
 
 
 def _rest_of_derivative(vector, context: MotionContext) -> list[sp.Expr]:
@@ -184,4 +214,3 @@ def body_motions(system: System, rates: Rates, context: MotionContext | None = N
         angular = rotation_motion(body.rotation, system, rates, context) if body.is_rigid else None
         out.append(BodyMotion(body, linear, angular))
     return tuple(out)
-
