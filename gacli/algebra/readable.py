@@ -18,6 +18,7 @@ at most 150 operations.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import sympy as sp
@@ -32,6 +33,10 @@ SIMPLIFY_OPS = 600
 # Common factors are taken out of sums (a walk that never expands) up to this
 # many nodes.
 FACTOR_NODES = 5_000
+# An expression in the rates is multiplied out and collected on their products
+# only while it would have at most this many terms.
+COLLECT_TERMS = 2_000
+_RATE = re.compile(r"^(dot|ddot|d\d+)\(")
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
@@ -57,11 +62,40 @@ class Tidy:
         expr = trig.reduce(expr)
         if not is_small(expr, FACTOR_NODES):
             return expr
+        by_rates = self._by_rates(expr)
+        plain = self._readable(expr)
+        # The shorter for a reader: what is printed is what counts.
+        return by_rates if by_rates is not None and len(str(by_rates)) < len(str(plain)) else plain
+
+    def _readable(self, expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
         if self.spent + ops > self.budget:
             return sp.factor_terms(expr)
         self.spent += ops
         return readable(expr)
+
+    def _by_rates(self, expr: sp.Expr) -> sp.Expr | None:
+        """A polynomial in the rates, collected on their products, each coefficient read.
+
+        As derived, the rest of an equation of motion holds the same product
+        of rates in many terms, under different factors (a wheel's and the
+        chassis' shares of V·a): only multiplied out do they meet, and only
+        then do their coefficients cancel. Done when the multiplied-out form
+        is small (counted first); the caller keeps it when it prints shorter.
+        """
+        rates = sorted((s for s in expr.free_symbols if _RATE.match(s.name)), key=sp.default_sort_key)
+        if not rates or not _expands_small(expr, COLLECT_TERMS):
+            return None
+        groups: dict[sp.Expr, list[sp.Expr]] = {}
+        for term in sp.Add.make_args(sp.expand(expr)):
+            coefficient, monomial = term.as_independent(*rates, as_Add=False)
+            groups.setdefault(monomial, []).append(coefficient)
+        terms = []
+        for monomial in sorted(groups, key=sp.default_sort_key):
+            coefficient = trig.reduce(sp.Add(*groups[monomial]), cancel=True)
+            if coefficient != 0:
+                terms.append(self._readable(coefficient) * monomial)
+        return sp.Add(*terms)
 
     def collected(self, expr: sp.Expr, accelerations) -> sp.Expr:
         """Collected on the accelerations, each coefficient tidied."""
