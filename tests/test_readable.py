@@ -96,3 +96,13 @@ def test_abs_and_sign_print_as_written_never_as_piecewise(tmp_path):
     text = _printed(path)
     assert "Piecewise" not in text and "Abs" not in text
     assert "sign(x)" in text
+
+
+def test_loads_are_not_printed_on_the_left_of_an_equation():
+    # Q − F is free of the loads; as formed, Q's terms and F's copy of them meet only multiplied out.
+    result = CliRunner().invoke(app, ["derive", str(SYSTEMS.parent / "tests" / "frames" / "spherical_robot.yaml")])
+    lines = [line for line in result.output.splitlines() if "dG/d(" in line]
+    assert len(lines) == 5
+    for line in lines:
+        left = line.split(": ", 1)[1].split(" = ")[0]
+        assert "M_1" not in left and "M_2" not in left, line

@@ -64,8 +64,14 @@ class Tidy:
             return expr
         by_rates = self._by_rates(expr)
         plain = self._readable(expr)
-        # The shorter for a reader: what is printed is what counts.
-        return by_rates if by_rates is not None and len(str(by_rates)) < len(str(plain)) else plain
+        if by_rates is None:
+            return plain
+        # The shorter for a reader, unless the other has symbols cancelled out of it
+        # (Q − F of an equation: the loads meet only multiplied out, and a shorter
+        # form that still shows them would say the equation holds them twice).
+        if by_rates.free_symbols < plain.free_symbols:
+            return by_rates
+        return by_rates if len(str(by_rates)) < len(str(plain)) else plain
 
     def _readable(self, expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
