@@ -50,6 +50,8 @@ def unspun(angular: Motion, inertia) -> tuple[Motion, tuple[str, sp.Expr] | None
     if best_size > _TURNED_NODES:
         return best
     candidates = _angles([*angular.partials.values(), *angular.velocity0])
+    if len(candidates) > _MAX_ANGLES:
+        return best
     for axis in "xyz":
         if not candidates or not _symmetric_about(sp.Matrix(inertia), axis):
             continue
@@ -93,6 +95,9 @@ def _symmetric_about(inertia: sp.Matrix, axis: str) -> bool:
 # Motions of more distinct subexpressions are kept in their axes: a turn of them
 # would be too large to reduce (a bicycle's), and trying costs seconds.
 _TURNED_NODES = 600
+# A body turned through more angles than this is the end of a chain, where no one
+# turn shortens much and trying each costs a reduction per angle and component.
+_MAX_ANGLES = 4
 
 
 def headed(linear: Motion, position) -> tuple[Motion, sp.Expr]:
@@ -112,6 +117,8 @@ def headed(linear: Motion, position) -> tuple[Motion, sp.Expr]:
     if best_size > _TURNED_NODES:
         return best
     candidates = _angles(position[:2])
+    if len(candidates) > _MAX_ANGLES:
+        return best
     for angle in candidates:
         turned = _turned(linear, angle)
         size = _size(turned)
