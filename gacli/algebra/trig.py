@@ -152,100 +152,115 @@ def _is_trig(expr: sp.Expr) -> bool:
 
 def _distribute(expr: sp.Expr, memo: dict) -> Poly:
     """The polynomial of ``expr``; ``memo`` holds those of subexpressions met before (a graph, not a tree)."""
-    known = memo.get(expr)
-    if known is None:
-        known = memo[expr] = _distribute_new(expr, memo)
-    return known
-
-
-def _distribute_new(expr: sp.Expr, memo: dict) -> Poly:
-    if expr.is_Add:
-        out: Poly = {}
-        for term in expr.args:
-            _merge(out, _distribute(term, memo))
-        return _bounded(out)
-    if expr.is_Mul:
-        out = {frozenset(): [sp.S.One]}
-        plain = []
-        for factor in expr.args:
-            if factor.has(sp.sin, sp.cos):
-                out = _times(out, _distribute(factor, memo), memo)
-            else:
-                plain.append(factor)
-        if plain:
-            scale = sp.Mul(*plain)
-            out = {m: [scale * c for c in cs] for m, cs in out.items()}
-        return out
-    if expr.is_Pow and expr.exp.is_Integer:
-        n = int(expr.exp)
-        if _is_trig(expr.base):
-            return {frozenset(((expr.base, n),)): [sp.S.One]}
-        if n > 0 and expr.base.is_Add:
-            out = {frozenset(): [sp.S.One]}
-            base = _distribute(expr.base, memo)
-            for _ in range(n):
-                out = _times(out, base, memo)
-            return out
-    if _is_trig(expr):
-        return {frozenset(((expr, 1),)): [sp.S.One]}
-    if expr.args and not expr.is_Atom:
-        # Not a polynomial in the sines and cosines (a quotient, a root): reduce inside it.
-        expr = expr.func(*[_reduce(a, memo) if isinstance(a, sp.Expr) else a for a in expr.args])
-    return {frozenset(): [expr]}
+    return _walk(expr, memo, _POLYNOMIALS)
 
 
 def _count(expr: sp.Expr, memo: dict) -> int:
     """The terms :func:`_distribute` would form for ``expr``, raising _TooLarge where it would.
 
-    The same walk with counts for polynomials: the same memo of distinct
-    subexpressions, the same work added at each product, the same bounds,
-    and the reductions inside quotients and roots counted as they are made.
+    The same walk (:func:`_walk`) over integers: the same memo of distinct
+    subexpressions, the same work added at each product, the same bounds, and
+    the reductions inside quotients and roots counted as they would be made.
     """
+    return _walk(expr, memo, _COUNTS)
+
+
+def _walk(expr: sp.Expr, memo: dict, algebra) -> object:
     known = memo.get(expr)
     if known is None:
-        known = memo[expr] = _count_new(expr, memo)
+        known = memo[expr] = _walk_new(expr, memo, algebra)
     return known
 
 
-def _count_new(expr: sp.Expr, memo: dict) -> int:
+def _walk_new(expr: sp.Expr, memo: dict, algebra) -> object:
+    """``expr`` as a polynomial in its sines and cosines, in ``algebra`` (polynomials or their sizes)."""
     if expr.is_Add:
-        return _bounded_count(sum(_count(term, memo) for term in expr.args))
+        return algebra.bounded(algebra.sum([_walk(term, memo, algebra) for term in expr.args]))
     if expr.is_Mul:
-        out = 1
+        out, plain = algebra.one(), []
         for factor in expr.args:
             if factor.has(sp.sin, sp.cos):
-                out = _times_count(out, _count(factor, memo), memo)
-        return out
+                out = algebra.times(out, _walk(factor, memo, algebra), memo)
+            else:
+                plain.append(factor)
+        return algebra.scaled(out, plain)
     if expr.is_Pow and expr.exp.is_Integer:
         n = int(expr.exp)
         if _is_trig(expr.base):
-            return 1
+            return algebra.trig(expr.base, n)
         if n > 0 and expr.base.is_Add:
-            out, base = 1, _count(expr.base, memo)
+            out, base = algebra.one(), _walk(expr.base, memo, algebra)
             for _ in range(n):
-                out = _times_count(out, base, memo)
+                out = algebra.times(out, base, memo)
             return out
     if _is_trig(expr):
-        return 1
+        return algebra.trig(expr, 1)
     if expr.args and not expr.is_Atom:
-        for a in expr.args:
+        # Not a polynomial in the sines and cosines (a quotient, a root): reduced inside.
+        return algebra.opaque(expr, memo)
+    return algebra.leaf(expr)
+
+
+class _Polynomials:
+    """The walk's algebra that forms the polynomial."""
+
+    one = staticmethod(lambda: {frozenset(): [sp.S.One]})
+    trig = staticmethod(lambda base, n: {frozenset(((base, n),)): [sp.S.One]})
+    leaf = staticmethod(lambda expr: {frozenset(): [expr]})
+    bounded = staticmethod(lambda poly: _bounded(poly))
+    times = staticmethod(lambda a, b, memo: _times(a, b, memo))
+
+    @staticmethod
+    def sum(parts: list[Poly]) -> Poly:
+        out: Poly = {}
+        for part in parts:
+            _merge(out, part)
+        return out
+
+    @staticmethod
+    def scaled(poly: Poly, plain: list[sp.Expr]) -> Poly:
+        if not plain:
+            return poly
+        scale = sp.Mul(*plain)
+        return {m: [scale * c for c in cs] for m, cs in poly.items()}
+
+    @staticmethod
+    def opaque(expr: sp.Expr, memo: dict) -> Poly:
+        return {frozenset(): [expr.func(*[_reduce(a, memo) if isinstance(a, sp.Expr) else a for a in expr.args])]}
+
+
+class _Counts:
+    """The walk's algebra that only counts the terms the polynomial would have."""
+
+    one = staticmethod(lambda: 1)
+    sum = staticmethod(lambda parts: sum(parts))
+    scaled = staticmethod(lambda count, plain: count)
+    trig = staticmethod(lambda base, n: 1)
+    leaf = staticmethod(lambda expr: 1)
+
+    @staticmethod
+    def bounded(terms: int) -> int:
+        if terms > MAX_TERMS:
+            raise _TooLarge
+        return terms
+
+    @staticmethod
+    def times(a: int, b: int, memo: dict) -> int:
+        size = a * b
+        memo[_WORK] += size
+        if size > MAX_TERMS or memo[_WORK] > MAX_WORK:
+            raise _TooLarge
+        return _Counts.bounded(size)
+
+    @staticmethod
+    def opaque(expr: sp.Expr, memo: dict) -> int:
+        for a in expr.args:  # as _reduce would: only what may hold a square is distributed
             if isinstance(a, sp.Expr) and _may_square(a):
-                _count(a, memo)
-    return 1
+                _walk(a, memo, _COUNTS)
+        return 1
 
 
-def _times_count(a: int, b: int, memo: dict) -> int:
-    size = a * b
-    memo[_WORK] += size
-    if size > MAX_TERMS or memo[_WORK] > MAX_WORK:
-        raise _TooLarge
-    return _bounded_count(size)
-
-
-def _bounded_count(terms: int) -> int:
-    if terms > MAX_TERMS:
-        raise _TooLarge
-    return terms
+_POLYNOMIALS, _COUNTS = _Polynomials(), _Counts()
 
 
 def _merge(into: Poly, other: Poly) -> None:
