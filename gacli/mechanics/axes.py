@@ -20,6 +20,7 @@ import sympy as sp
 
 from gacli.algebra import trig
 from gacli.algebra.graph import postorder
+from gacli.loader.frames import simple_rotation
 from gacli.mechanics.motions import BodyMotion, Motion, make_motion
 from gacli.model import System
 
@@ -68,19 +69,9 @@ def spin_back(vector: Sequence[sp.Expr], spin: tuple[str, sp.Expr] | None) -> li
     if spin is None:
         return list(vector)
     axis, angle = spin
-    R = _rotation(axis, angle)
+    R = simple_rotation(axis, angle).tolist()  # v_parent = R v_body, as the frames' own
     return [trig.reduce(sp.Add(*[R[i][j] * vector[j] for j in range(3) if R[i][j] != 0 and vector[j] != 0]),
                         cancel=True) for i in range(3)]
-
-
-def _rotation(axis: str, angle: sp.Expr) -> list[list[sp.Expr]]:
-    c, s = sp.cos(angle), sp.sin(angle)
-    i = "xyz".index(axis)
-    j, k = (i + 1) % 3, (i + 2) % 3
-    R = [[sp.S.Zero] * 3 for _ in range(3)]
-    R[i][i] = sp.S.One
-    R[j][j], R[j][k], R[k][j], R[k][k] = c, -s, s, c
-    return R
 
 
 def _symmetric_about(inertia: sp.Matrix, axis: str) -> bool:
