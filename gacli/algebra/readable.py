@@ -18,13 +18,13 @@ at most 150 operations.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
 from gacli.algebra import trig
+from gacli.algebra.symbols import RATE_NAME
 from gacli.algebra.graph import LARGE_TREE, is_large, is_small
 
 # A quotient is cancelled (which expands numerator and denominator) only up
@@ -36,7 +36,6 @@ FACTOR_NODES = 5_000
 # An expression in the rates is multiplied out and collected on their products
 # only while it would have at most this many terms.
 COLLECT_TERMS = 2_000
-_RATE = re.compile(r"^(dot|ddot|d\d+)\(")
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
@@ -89,7 +88,7 @@ class Tidy:
         then do their coefficients cancel. Done when the multiplied-out form
         is small (counted first); the caller keeps it when it prints shorter.
         """
-        rates = sorted((s for s in expr.free_symbols if _RATE.match(s.name)), key=sp.default_sort_key)
+        rates = sorted((s for s in expr.free_symbols if RATE_NAME.match(s.name)), key=sp.default_sort_key)
         if not rates or not _expands_small(expr, COLLECT_TERMS):
             return None
         groups: dict[sp.Expr, list[sp.Expr]] = {}

@@ -10,6 +10,7 @@ back as an expression.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping
 
 import sympy as sp
@@ -28,6 +29,8 @@ from gacli.algebra.fastdiff import Differentiator
 T = sp.Symbol("t", real=True)
 
 _ORDER_PREFIX = {0: "", 1: "dot", 2: "ddot"}
+# A rate's name as rate_name writes it: prefix, the order of a d3(...) or higher, the name.
+RATE_NAME = re.compile(r"^(dot|ddot|d(\d+))\((.+)\)$")
 
 
 def rate_name(name: str, order: int) -> str:

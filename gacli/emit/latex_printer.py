@@ -14,10 +14,11 @@ from collections.abc import Mapping
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from gacli.algebra.symbols import RATE_NAME
 from gacli.model import System
 from gacli.read.texsafe import is_printable_name
 
-_RATE = re.compile(r"^(dot|ddot|d(\d+))\((.+)\)$")
+_RATE = RATE_NAME
 _DIFFERENTIAL = re.compile(r"^d\[(.+)\]$")
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 

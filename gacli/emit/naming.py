@@ -133,7 +133,7 @@ RESERVED = ReservedNames(GENERATED_NAMES | C_KEYWORDS | MATH_H_NAMES | frozenset
 # Generated function names, after "<name>_"; the C source calls the last one.
 C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "reactions", "lu_solve", "cholesky_solve")
 
-_RATE_NAME = re.compile(r"^(dot|ddot|d(\d+))\((.+)\)$")
+_RATE_NAME = S.RATE_NAME
 _RATE_ORDERS = {"dot": 1, "ddot": 2}
 
 
