@@ -19,6 +19,7 @@ from dataclasses import replace
 import sympy as sp
 
 from gacli.algebra import trig
+from gacli.algebra.angles import relative
 from gacli.algebra.graph import postorder
 from gacli.loader.frames import simple_rotation
 from gacli.mechanics.motions import BodyMotion, Motion, make_motion
@@ -124,7 +125,7 @@ def turn(vector: Sequence[sp.Expr], angle: sp.Expr) -> list[sp.Expr]:
         return list(vector)
     c, s = sp.cos(angle), sp.sin(angle)
     x, y, z = vector
-    return [trig.reduce(c * x + s * y, cancel=True), trig.reduce(-s * x + c * y, cancel=True), z]
+    return [relative(trig.reduce(c * x + s * y, cancel=True)), relative(trig.reduce(-s * x + c * y, cancel=True)), z]
 
 
 def _turned(linear: Motion, angle: sp.Expr) -> Motion:

@@ -19,6 +19,7 @@ import sympy as sp
 from gacli.loader import nonlinear as NL
 from gacli.algebra import symbols as S
 from gacli.algebra import trig
+from gacli.algebra.angles import relative
 from gacli.errors import Diagnostic, SystemFileError
 from gacli.algebra.graph import is_small
 from gacli.algebra.matrices import nonzero, rank, solve_linear
@@ -283,7 +284,9 @@ def _tidy(expr: sp.Expr) -> sp.Expr:
         return expr
     cancelled = sp.cancel(expr)
     numerator, denominator = sp.fraction(cancelled)
-    reduced = trig.reduce(numerator), trig.reduce(denominator)
+    below = trig.reduce(denominator)
+    # A trailer's rate, a function of θ − θ_T alone, is written so (gacli.algebra.angles).
+    reduced = relative(trig.reduce(numerator), beside=below), below
     if reduced == (numerator, denominator):
         return cancelled
     return sp.cancel(reduced[0] / reduced[1])
