@@ -32,7 +32,7 @@ from gacli.algebra.graph import is_small, postorder
 _MAX_ANGLES = 4
 # Distinct subexpressions past which an expression is left as it is: the
 # reductions it would take are the ones trig refuses anyway.
-_MAX_NODES = 1_500
+_MAX_NODES = 4_000
 
 
 def relative(expr: sp.Expr, beside: sp.Expr = sp.S.One) -> sp.Expr:
@@ -66,16 +66,19 @@ def relative(expr: sp.Expr, beside: sp.Expr = sp.S.One) -> sp.Expr:
 def _through_difference(expr: sp.Expr, kept: sp.Symbol, gone: sp.Symbol) -> sp.Expr:
     """``expr`` with ``gone`` written as ``kept`` − (kept − gone), distributed and reduced."""
     difference = kept - gone
-    sign = 1
     if sp.sin(difference).could_extract_minus_sign():
-        difference, sign = gone - kept, -1  # sin(θ_T − θ) is printed as −sin(θ − θ_T) anyway
-    s, c = sp.sin(difference), sp.cos(difference)
-    # gone = kept − sign·difference
-    replacement = {
-        sp.sin(gone): sp.sin(kept) * c - sign * sp.cos(kept) * s,
-        sp.cos(gone): sp.cos(kept) * c + sign * sp.sin(kept) * s,
+        difference = -difference  # sin(θ_T − θ) is printed as −sin(θ − θ_T) anyway
+    sign = 1 if difference == kept - gone else -1
+    # The difference is reduced as a plain angle d, and only then written out: as
+    # θ − θ_T beside θ, the reduction would write it back into θ and θ_T
+    # (gacli.algebra.angle_sums).
+    d = sp.Dummy("d", real=True)
+    replacement = {  # gone = kept − sign·d
+        sp.sin(gone): sp.sin(kept) * sp.cos(d) - sign * sp.cos(kept) * sp.sin(d),
+        sp.cos(gone): sp.cos(kept) * sp.cos(d) + sign * sp.sin(kept) * sp.sin(d),
     }
-    return trig.reduce(expr.xreplace(replacement), cancel=True)
+    reduced = trig.reduce(expr.xreplace(replacement), cancel=True)
+    return reduced if d not in reduced.free_symbols else reduced.xreplace({d: difference})
 
 
 def _angles(expr: sp.Expr) -> list[sp.Symbol]:

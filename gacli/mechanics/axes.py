@@ -105,17 +105,17 @@ def headed(linear: Motion, position) -> tuple[Motion, sp.Expr]:
     those whose sine or cosine the horizontal position holds; N's own axes
     are kept unless a turn shortens the components.
     """
-    best, best_size = (linear, sp.S.Zero), _size(linear)
-    if best_size > _TURNED_NODES:
+    best, best_cost = (linear, sp.S.Zero), _cost(linear)
+    if best_cost[1] > _TURNED_NODES:
         return best
     candidates = _angles(position[:2])
     if len(candidates) > _MAX_ANGLES:
         return best
     for angle in candidates:
         turned = _turned(linear, angle)
-        size = _size(turned)
-        if size < best_size:
-            best, best_size = (turned, angle), size
+        cost = _cost(turned)
+        if cost < best_cost:
+            best, best_cost = (turned, angle), cost
     return best
 
 
@@ -143,6 +143,16 @@ def _angles(exprs) -> list[sp.Expr]:
     """The symbols whose sine or cosine ``exprs`` hold, in a fixed order."""
     found = {node.args[0] for node in postorder(exprs) if isinstance(node, (sp.sin, sp.cos)) and node.args[0].is_Symbol}
     return sorted(found, key=sp.default_sort_key)
+
+
+def _cost(motion: Motion) -> tuple[int, int]:
+    """The angles a motion's components hold, then their size: a trailer wheel's motion
+    along the trailer's heading holds only the hitch angle θ − θ_T, and in N's axes
+    θ and θ_T besides, whose products then cancel only through sin² + cos², though
+    the factored form in N has fewer distinct subexpressions."""
+    exprs = [*motion.partials.values(), *motion.velocity0, *motion.acceleration_rest]
+    angles = {node.args[0] for node in postorder(exprs) if isinstance(node, (sp.sin, sp.cos))}
+    return len(angles), _size(motion)
 
 
 def _size(motion: Motion) -> int:
