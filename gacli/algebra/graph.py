@@ -115,3 +115,32 @@ def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic]) 
         else:
             rebuilt[node] = node
     return [rebuilt[e] for e in exprs]
+
+
+def expanded_terms(expr: sp.Expr, limit: int) -> int:
+    """How many terms ``expand(expr)`` would have, counted without expanding (stops past ``limit``)."""
+    if expr.is_Add:
+        total = 0
+        for term in expr.args:
+            total += expanded_terms(term, limit)
+            if total > limit:
+                break
+        return total
+    if expr.is_Mul:
+        total = 1
+        for factor in expr.args:
+            total *= expanded_terms(factor, limit)
+            if total > limit:
+                break
+        return total
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0 and expr.base.is_Add:
+        k = expanded_terms(expr.base, limit)
+        n = int(expr.exp)
+        # The multinomial count C(n + k − 1, k − 1), stopped as soon as it passes the limit.
+        total = 1
+        for i in range(1, min(n, k - 1) + 1):
+            total = total * (max(n, k - 1) + i) // i
+            if total > limit:
+                break
+        return total
+    return 1

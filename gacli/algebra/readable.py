@@ -25,7 +25,7 @@ from sympy.printing.str import StrPrinter
 
 from gacli.algebra import trig
 from gacli.algebra.symbols import RATE_NAME
-from gacli.algebra.graph import LARGE_TREE, is_large, is_small
+from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small
 
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.
@@ -129,7 +129,7 @@ def _is_quotient(expr: sp.Expr) -> bool:
 
 def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
     """Whether multiplying ``expr`` out stays under ``limit`` terms (counted without expanding)."""
-    return trig.expanded_terms(expr, limit) <= limit
+    return expanded_terms(expr, limit) <= limit
 
 
 # A symbolically solved quotient (the constraint forces, M⁻¹F put in) is

@@ -13,10 +13,9 @@ import sympy as sp
 
 from gacli.loader import nonlinear as NL
 from gacli.algebra import symbols as S
-from gacli.algebra import trig
 from gacli.read.expr.build import Scope
 from gacli.algebra.fastdiff import jacobian_rows
-from gacli.algebra.graph import is_small
+from gacli.algebra.graph import expanded_terms, is_small
 from gacli.numeric.zero import vanishes
 from gacli.model import Constraint, Form, QuasiCoordinate
 from gacli.read.schema import SymbolDecl, VelocityConstraintDecl
@@ -195,7 +194,7 @@ def _linearity_problem(expr: sp.Expr, partials: dict[sp.Symbol, sp.Expr]) -> str
 
 def _offending_term(expr: sp.Expr, present: set) -> str:
     # A small tree may still multiply out to millions of terms ((dx + x + ... )**100).
-    if not is_small(expr, 400) or trig.expanded_terms(expr, 2_000) > 2_000:
+    if not is_small(expr, 400) or expanded_terms(expr, 2_000) > 2_000:
         return "a differential appears inside a power or a function"
     for term in sp.Add.make_args(sp.expand(expr)):
         degree = sum(sp.degree(term, d) for d in present if d in term.free_symbols) if term.is_polynomial(*present) else 2
