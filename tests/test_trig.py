@@ -10,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from gacli.algebra import trig
+from gacli.algebra.graph import expanded_terms
 
 a, b, m, r, u = sp.symbols("a b m r u")
 ANGLES = (a, b)
@@ -80,7 +81,7 @@ def test_a_large_expansion_is_left_alone():
     ((a + b + m + r + u) ** 40, 1_000, None),
 ])
 def test_expanded_terms_counts_without_expanding(expr, limit, expected):
-    count = trig.expanded_terms(expr, limit)
+    count = expanded_terms(expr, limit)
     if expected is None:
         assert count > limit
     else:
@@ -130,3 +131,32 @@ def test_cancel_distributes_what_has_no_square():
     expr = sp.sin(a) * (m * sp.cos(a) + r) - sp.cos(a) * (m * sp.sin(a) + u)
     assert trig.reduce(expr) is expr
     assert trig.reduce(expr, cancel=True) == r * sp.sin(a) - u * sp.cos(a)
+
+
+d, t = sp.symbols("delta theta_T")
+
+
+def test_a_sum_beside_its_own_angles_is_written_out():
+    # sin θ cos(θ + δ) − cos θ sin(θ + δ) = −sin δ: only one angle at a time, after
+    # θ + δ is written out by the addition formulas.
+    expr = m * (sp.sin(a) * sp.cos(a + d) - sp.cos(a) * sp.sin(a + d))
+    assert trig.reduce(expr) == -m * sp.sin(d)
+
+
+def test_a_difference_kept_whole_when_shorter():
+    # sin²(θ − θ_T) + cos²(θ − θ_T) beside sin θ and sin θ_T: still reduced.
+    expr = m * sp.cos(a - t) ** 2 + r * sp.sin(a) + u * sp.sin(t) + m * sp.sin(a - t) ** 2
+    assert sp.expand(trig.reduce(expr) - (m + r * sp.sin(a) + u * sp.sin(t))) == 0
+    # A hitch angle θ − θ_T beside θ and θ_T: written out by the addition formulas
+    # it would be longer, so it is kept whole.
+    hitch = m * sp.sin(a) * sp.cos(a - t) + r * sp.sin(a - t) * sp.cos(t)
+    assert trig.reduce(hitch, cancel=True).has(sp.cos(a - t))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.lists(st.integers(0, 7), min_size=1, max_size=4), min_size=1, max_size=6), st.integers(0, 10_000))
+def test_sums_of_angles_keep_their_value(terms, seed):
+    factors = (sp.sin(a + b), sp.cos(a + b), sp.sin(a), sp.cos(b), sp.cos(a - 2 * b), m, r, sp.Integer(3))
+    expr = sp.Add(*[sp.Mul(*[factors[i] for i in term]) for term in terms])
+    for x, y in zip(_values(expr, seed), _values(trig.reduce(expr), seed)):
+        assert abs(x - y) <= 1e-20 + 1e-12 * abs(x)

@@ -13,11 +13,16 @@ Only sums and products are distributed, and only where a factor holds a sine
 or cosine; sums of parameters stay whole, so that factored masses such as
 (m₁ + m₂) are not multiplied out. The work is bounded: an expression whose
 distribution would exceed :data:`MAX_TERMS` terms is returned unchanged.
+A sine or cosine of a sum (θ + δ) beside one of its angles alone is first
+written out by the addition formulas (:mod:`gacli.algebra.angle_sums`).
 """
 
 from __future__ import annotations
 
 import sympy as sp
+
+from gacli.algebra import angle_sums
+from gacli.algebra.graph import expanded_terms, postorder
 
 
 # Terms of the distributed polynomial past which the reduction is not tried:
@@ -50,14 +55,31 @@ def reduce(expr: sp.Expr, cancel: bool = False) -> sp.Expr:
     """
     if not isinstance(expr, sp.Expr) or not (cancel and _holds_trig(expr) or _may_square(expr)):
         return expr
+    memo = {_WORK: 0}
+    # Counted first: an entry too large to distribute (a bicycle's solved rates)
+    # is refused at the cost of a walk, not of the products formed before the
+    # bound is met, which were half of the bicycle's derivation.
+    plain = _reduced_or_none(expr, cancel, memo)
+    # θ + δ beside θ alone: written out, every angle is one angle again and the
+    # reduction a normal form (a steered wheel's rows). Kept only when shorter: a
+    # hitch angle θ − θ_T beside θ and θ_T is the shorter angle to keep whole.
+    sums = angle_sums.expansions(memo)
+    written_out = _reduced_or_none(expr.xreplace(sums), cancel, {_WORK: 0}) if sums else None
+    candidates = [e for e in (plain, written_out) if e is not None]
+    return min(candidates, key=_nodes) if candidates else expr
+
+
+def _reduced_or_none(expr: sp.Expr, cancel: bool, memo: dict) -> sp.Expr | None:
+    """The reduction of ``expr``, or None when it is too large to distribute (``memo`` holds what the count saw)."""
     try:
-        # Counted first: an entry too large to distribute (a bicycle's solved rates)
-        # is refused at the cost of a walk, not of the products formed before the
-        # bound is met, which were half of the bicycle's derivation.
-        _count(expr, {_WORK: 0})
+        _count(expr, memo)
         return _reduce(expr, {_WORK: 0}, cancel)
     except _TooLarge:
-        return expr
+        return None
+
+
+def _nodes(expr: sp.Expr) -> int:
+    return sum(1 for _ in postorder([expr]))
 
 
 def _reduce(expr: sp.Expr, memo: dict, cancel: bool = False) -> sp.Expr:
@@ -95,14 +117,12 @@ def _may_square(expr: sp.Expr) -> bool:
     reduction nearly free there. An expression of more than MAX_NODES
     distinct subexpressions counts as none: it is too large to distribute.
     """
-    held: dict[sp.Basic, frozenset] = {}
     try:
-        _held(expr, held)
+        return bool(angle_sums.expansions(_held(expr, {})))  # sin(θ + δ) beside sin θ, to write out
     except _Square:
         return True
     except (_TooLarge, RecursionError):
         return False
-    return False
 
 
 def _holds_trig(expr: sp.Expr) -> bool:
@@ -366,32 +386,3 @@ def _rebuild(poly: Poly) -> sp.Expr:
         trig = sp.Mul(*[b ** e for b, e in monomial])
         terms.append(coefficient[0] * trig)
     return sp.Add(*terms)
-
-
-def expanded_terms(expr: sp.Expr, limit: int) -> int:
-    """How many terms ``expand(expr)`` would have, counted without expanding (stops past ``limit``)."""
-    if expr.is_Add:
-        total = 0
-        for term in expr.args:
-            total += expanded_terms(term, limit)
-            if total > limit:
-                break
-        return total
-    if expr.is_Mul:
-        total = 1
-        for factor in expr.args:
-            total *= expanded_terms(factor, limit)
-            if total > limit:
-                break
-        return total
-    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0 and expr.base.is_Add:
-        k = expanded_terms(expr.base, limit)
-        n = int(expr.exp)
-        # The multinomial count C(n + k − 1, k − 1), stopped as soon as it passes the limit.
-        total = 1
-        for i in range(1, min(n, k - 1) + 1):
-            total = total * (max(n, k - 1) + i) // i
-            if total > limit:
-                break
-        return total
-    return 1
