@@ -25,7 +25,7 @@ from sympy.printing.str import StrPrinter
 
 from gacli.algebra import trig
 from gacli.algebra.symbols import RATE_NAME
-from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small
+from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small, postorder
 
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.
@@ -61,16 +61,13 @@ class Tidy:
         expr = trig.reduce(expr)
         if not is_small(expr, FACTOR_NODES):
             return expr
-        by_rates = self._by_rates(expr)
-        plain = self._readable(expr)
-        if by_rates is None:
-            return plain
-        # The shorter for a reader, unless the other has symbols cancelled out of it
+        candidates = [c for c in (self._readable(expr), self._by_rates(expr), self._over_common(expr))
+                      if c is not None]
+        # The shortest for a reader, unless another has symbols cancelled out of it
         # (Q − F of an equation: the loads meet only multiplied out, and a shorter
         # form that still shows them would say the equation holds them twice).
-        if by_rates.free_symbols < plain.free_symbols:
-            return by_rates
-        return by_rates if len(str(by_rates)) < len(str(plain)) else plain
+        fewest = [c for c in candidates if not any(o.free_symbols < c.free_symbols for o in candidates)]
+        return min(fewest, key=lambda c: len(str(c)))  # the first of equals: the plain reading
 
     def _readable(self, expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
@@ -102,6 +99,13 @@ class Tidy:
                 terms.append(self._readable(coefficient) * monomial)
         return sp.Add(*terms)
 
+    def _over_common(self, expr: sp.Expr) -> sp.Expr | None:
+        """``expr`` over the common denominator of its sums (:func:`over_common_denominator`).
+
+        Bounded, as :meth:`_by_rates` is, by the terms it would multiply out, not by the budget.
+        """
+        return over_common_denominator(expr) if _has_denominator(expr) else None
+
     def collected(self, expr: sp.Expr, accelerations) -> sp.Expr:
         """Collected on the accelerations, each coefficient tidied."""
         expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) and _expands_small(expr) else expr
@@ -113,13 +117,101 @@ class Tidy:
 
 
 def readable(expr: sp.Expr) -> sp.Expr:
-    """sin² + cos² = 1, common factors out, a small quotient cancelled; never larger work than that."""
+    """sin² + cos² = 1, common factors out, a small quotient cancelled; never larger work than that.
+
+    When it multiplies out small, the expression collected on its sines and cosines
+    (each coefficient factored) is read too, and the shorter kept.
+    """
     expr = trig.reduce(expr)  # a second time costs little: nothing is left to distribute
     if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and _expands_small(expr):
         cancelled = trig.reduce(sp.cancel(expr))  # cancel multiplies out, and may rebuild sin² + cos²
         if sp.count_ops(cancelled) < sp.count_ops(expr):
             expr = cancelled
-    return sp.factor_terms(expr)
+    plain = sp.factor_terms(expr)
+    if not expr.has(sp.sin, sp.cos) or not _expands_small(expr, COLLECT_TERMS // 4):
+        return plain
+    by_angles = collected(sp.expand(expr))
+    return by_angles if len(str(by_angles)) < len(str(plain)) else plain
+
+
+def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
+    """N/D as a careful person writes a quotient: D the product of the sums in the denominators
+    (L − c cos δ of a steered wheel), N collected (:func:`collected`); None when there is no such
+    sum or N would multiply out to more than COLLECT_TERMS terms.
+
+    As derived, the terms of an entry keep their own denominators, 1/D and 1/D², each
+    beside its own part of the numerator, and a coefficient such as m_c L² c² repeats
+    under both. Monomial denominators (the r² of C_w/r²) stay in the coefficients.
+    """
+    if not _expands_small(expr, COLLECT_TERMS):
+        return None
+    numerator, denominator = sp.fraction(sp.together(expr))
+    if not _expands_small(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
+        return None
+    sums, monomials = [], []
+    for factor in sp.Mul.make_args(sp.factor_terms(denominator)):
+        base = factor.base if factor.is_Pow else factor
+        (sums if base.is_Add else monomials).append(factor)
+    if not sums:
+        return None
+    numerator = trig.reduce(sp.expand(numerator), cancel=True)
+    return collected(sp.expand(numerator), sp.Mul(*monomials)) / sp.Mul(*sums)
+
+
+def collected(expanded: sp.Expr, below: sp.Expr = sp.S.One) -> sp.Expr:
+    """A sum collected on its products of rates, each coefficient on its products of sines
+    and cosines, and each coefficient of those (divided by ``below``) factored while small.
+
+    m_k (b² − w²)/w², not −A_k b²/(c² w²) + A_k/c² + ... : the parameters of a term group
+    as a careful person groups them.
+    """
+    terms = sp.Add.make_args(expanded)
+    rates = sorted({s for s in expanded.free_symbols if RATE_NAME.match(s.name)}, key=sp.default_sort_key)
+    angles = sorted(expanded.atoms(sp.sin, sp.cos), key=sp.default_sort_key)
+    groups: dict[sp.Expr, dict[sp.Expr, list[sp.Expr]]] = {}
+    for term in terms:
+        rest, by_rates = term.as_independent(*rates, as_Add=False) if rates else (term, sp.S.One)
+        coefficient, by_angles = rest.as_independent(*angles, as_Add=False) if angles else (rest, sp.S.One)
+        groups.setdefault(by_rates, {}).setdefault(by_angles, []).append(coefficient)
+    out = []
+    for r in sorted(groups, key=sp.default_sort_key):
+        inner = groups[r]
+        out.append(sp.factor_terms(sp.Add(*[_factored(sp.Add(*inner[a]) / below) * a
+                                            for a in sorted(inner, key=sp.default_sort_key)])) * r)
+    return sp.factor_terms(sp.Add(*out))
+
+
+# A coefficient of parameters alone is factored (a polynomial factorization) only
+# up to this many operations and this degree in any one symbol.
+FACTOR_OPS = 120
+FACTOR_DEGREE = 6
+
+
+def _factored(coefficient: sp.Expr) -> sp.Expr:
+    """The coefficient's common factors out, or its factorization where that prints shorter."""
+    plain = sp.factor_terms(coefficient)
+    if len(sp.Add.make_args(sp.expand(plain))) < 3 or not _factorable(coefficient):
+        return plain  # two terms factor into something no shorter ((b − w)(b + w))
+    factored = _FACTORED.get(coefficient)
+    if factored is None:
+        factored = _FACTORED[coefficient] = sp.factor(coefficient)
+    return factored if len(str(factored)) < len(str(plain)) else plain
+
+
+# Factorizations met so far: the same coefficient recurs in every entry of M and F.
+_FACTORED: dict[sp.Expr, sp.Expr] = {}
+
+
+def _factorable(expr: sp.Expr) -> bool:
+    """Small, of parameters alone, and of low degree: where polynomial factoring is cheap."""
+    if not is_small(expr, FACTOR_OPS) or expr.has(sp.Function):
+        return False
+    return all(p.exp.is_Integer and abs(p.exp) <= FACTOR_DEGREE for p in expr.atoms(sp.Pow))
+
+
+def _has_denominator(expr: sp.Expr) -> bool:
+    """Whether a symbolic denominator stands anywhere in ``expr``, not only in its top-level terms."""
+    return any(node.is_Pow and node.exp.is_negative and not node.base.is_Number for node in postorder([expr]))
 
 
 def _is_quotient(expr: sp.Expr) -> bool:
