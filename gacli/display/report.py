@@ -67,10 +67,13 @@ def rates(d: Derivation, tidy: Tidy) -> Section:
 
 
 def gibbs(d: Derivation, tidy: Tidy) -> Section:
+    """G as `gacli gibbs` prints it: from the Gibbs function itself (eqs. 14.17, 14.21)."""
     from gacli.display.steps import gibbs_polynomial
 
-    return Section("Gibbs function, acceleration terms (eqs. 14.17, 14.21)",
-                   (f"G = {show(gibbs_polynomial(d, tidy))} + ...",))
+    return Section(GIBBS_TITLE, (f"G = {show(gibbs_polynomial(d, tidy))} + ...",))
+
+
+GIBBS_TITLE = "Gibbs function, acceleration terms (eqs. 14.17, 14.21)"
 
 
 def forces(d: Derivation, tidy: Tidy) -> Section:
@@ -78,14 +81,54 @@ def forces(d: Derivation, tidy: Tidy) -> Section:
     return Section("Generalized forces, eq. (14.13)", tuple(lines))
 
 
-def equations(d: Derivation, tidy: Tidy) -> Section:
-    from gacli.display.steps import equation_of_motion
+@dataclass(frozen=True)
+class Coefficients:
+    """The equations' coefficients as printed: M's nonzero entries and Q − F, each tidied once.
 
+    ∂G/∂u̇_s = Σ_r M_sr u̇_r + (Q_s − F_s) (eq. 14.19), so these are also G's
+    coefficients: G = ½ Σ M_rs u̇_r u̇_s + Σ (Q_s − F_s) u̇_s + (terms free of u̇).
+    """
+
+    mass: dict[tuple[int, int], sp.Expr]
+    rest: tuple[sp.Expr, ...]
+    forces: tuple[sp.Expr, ...]
+
+
+def coefficients(d: Derivation, tidy: Tidy) -> Coefficients:
+    # The nonzero entries only, each once: tidying every entry of a row made this ~k² per row.
+    mass = {(i, j): tidy(e) for (i, j), e in sorted(d.mass_matrix.todok().items()) if j >= i and e != 0}
+    mass.update({(j, i): e for (i, j), e in list(mass.items())})
+    rest = tuple(tidy(q - f) for q, f in zip(d.generalized_forces, d.forcing))
+    return Coefficients(mass, rest, tuple(tidy(q) for q in d.generalized_forces))
+
+
+def equations(d: Derivation, c: Coefficients) -> Section:
     lines = []
     for s, name in enumerate(d.independent):
-        eq = equation_of_motion(d, s, tidy)
-        lines.append(f"dG/d({rate_name(name, 2)}): {show(eq.lhs)} = {show(eq.rhs)}")
+        terms = [e * d.speed_rates[r] for (i, r), e in sorted(c.mass.items()) if i == s]
+        lhs = sp.Add(*terms) + c.rest[s]
+        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(c.forces[s])}")
     return Section("Gibbs-Appell equations, eq. (14.19)", tuple(lines))
+
+
+def gibbs_of(d: Derivation, c: Coefficients) -> Section:
+    """G from the equations' own coefficients: written out when short, else named through them."""
+    acc = d.speed_rates
+    terms = [e * acc[i] ** 2 / 2 if i == j else e * acc[i] * acc[j] for (i, j), e in sorted(c.mass.items()) if i <= j]
+    G = show(sp.Add(*terms, *(r * a for r, a in zip(c.rest, acc))))
+    if len(G) <= GIBBS_WRITTEN_OUT:
+        return Section(GIBBS_TITLE, (f"G = {G} + ...",))
+    return Section(GIBBS_TITLE, (
+        "G = 1/2*sum(M[r,s]*ddot(u_r)*ddot(u_s)) + sum((Q_s - F_s)*ddot(u_s)) + ...",
+        f"  with u = {', '.join(d.independent)}: its coefficients are those of the equations below, "
+        f"dG/d(ddot(u_s)) = sum(M[s,r]*ddot(u_r)) + Q_s - F_s; `gacli gibbs` writes it out",
+    ))
+
+
+# G is written out in `derive` up to this many characters; past it, it is named through
+# the equations' coefficients, which it repeats (∂G/∂u̇_s = M u̇ + Q − F): written out
+# again it was a third to a half of a robot's printout (docs/readable.md).
+GIBBS_WRITTEN_OUT = 2_000
 
 
 def kinematic(d: Derivation, tidy: Tidy) -> Section:
@@ -103,7 +146,8 @@ def derivation_report(d: Derivation) -> tuple[Section, ...]:
     """The results of the chapter's solution procedure (section 14.3)."""
     if not displayable(d):
         return (freedom(d), too_large())
-    return (freedom(d), rates(d, Tidy()), gibbs(d, Tidy()), forces(d, Tidy()), equations(d, Tidy()), kinematic(d, Tidy()))
+    c = coefficients(d, Tidy())
+    return (freedom(d), rates(d, Tidy()), gibbs_of(d, c), forces(d, Tidy()), equations(d, c), kinematic(d, Tidy()))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
