@@ -106,3 +106,24 @@ def test_the_trailer_rates_are_functions_of_the_hitch_angle():
     for name in ("theta_T", "psi_L", "psi_R"):
         rate = rates.rate(name)
         assert {f.args[0] for f in rate.atoms(sp.sin, sp.cos)} == {theta - theta_T}, (name, rate)
+
+
+def test_a_pair_through_their_sum_is_written_so_for_display():
+    # A bead at s on a hoop spinning by φ: the display writes sin(s + φ), as by hand.
+    s_, phi = sp.symbols("s phi", real=True)
+    expr = k * (sp.sin(s_) * sp.cos(phi) + sp.cos(s_) * sp.sin(phi)) + m * (sp.cos(s_) * sp.cos(phi) - sp.sin(s_) * sp.sin(phi))
+    shown = relative(expr, sums=True)
+    assert shown.atoms(sp.sin, sp.cos) == {sp.sin(s_ + phi), sp.cos(s_ + phi)}
+    assert sp.simplify(shown - expr) == 0
+    # The derivation keeps sums out (its products cancel less so).
+    assert relative(expr) == expr
+
+
+def test_a_pair_that_does_not_combine_is_not_tried(monkeypatch):
+    # sin θ + sin θ_T changes when θ and θ_T move with their difference fixed: no reduction is spent on it.
+    import gacli.algebra.angles as angles
+
+    calls = []
+    monkeypatch.setattr(angles, "_through", lambda *args: calls.append(args) or args[0])
+    relative(k * sp.sin(a) * sp.cos(b) + m * sp.sin(b), sums=True)
+    assert calls == []

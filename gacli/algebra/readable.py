@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.printing.str import StrPrinter
 
 from gacli.algebra import trig
+from gacli.algebra.angles import relative
 from gacli.algebra.symbols import RATE_NAME
 from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small, postorder
 
@@ -61,6 +62,9 @@ class Tidy:
         expr = trig.reduce(expr)
         if not is_small(expr, FACTOR_NODES):
             return expr
+        # A pair of angles the expression holds only through their sum or difference
+        # (a bead at s on a spinning hoop: s + φ) is written so, as by hand.
+        expr = relative(expr, sums=True)
         candidates = [c for c in (self._readable(expr), self._by_rates(expr), self._over_common(expr))
                       if c is not None]
         # The shortest for a reader, unless another has symbols cancelled out of it
