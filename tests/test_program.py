@@ -160,7 +160,7 @@ def test_inlining_keeps_the_sharing_of_the_bicycle_s_program():
     own, _ = operations([e for _, e in program.assignments])
     rates, M, F = inline(program)
     inlined, _ = operations([*rates, *M, *F])
-    assert own < 1_100  # the prototype's 1,055 (benchmarks/prototype/REPORT_program.md), KanesMethod's 3,959
+    assert own <= 1_060  # the prototype's 1,055 (benchmarks/prototype/REPORT_program.md), KanesMethod's 3,959
     assert inlined <= 1.1 * own, (inlined, own)
 
 

@@ -18,7 +18,7 @@ Modules: ``tape`` (assignments, value numbering, the zero test), ``vectors``,
 
 from __future__ import annotations
 
-from gacli.mechanics.program.build import build
+from gacli.mechanics.program.build import program_of
 from gacli.mechanics.program.record import Program, inline
 from gacli.mechanics.program.support import Unsupported, static_reason
 from gacli.model import System
@@ -31,7 +31,7 @@ def _attempt(system: System) -> Program | str:
     if reason is not None:
         return reason
     try:
-        return build(system)
+        return program_of(system)
     except Unsupported as exc:
         return str(exc)
 

@@ -95,7 +95,7 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     if inertia is not None:
         _rotation_mass(motion, u, m, inertia, lam, sums)
     tape.stage = "F"
-    effective = tape.vec(add(loads.force, scale(-mass, m.a_rest)))
+    effective = tape.vec(add(loads.resultant(motion.tree, u.frame), scale(-mass, m.a_rest)))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
     if inertia is not None:

@@ -54,7 +54,7 @@ def independent_rates(system: System) -> tuple[str, ...]:
     return R.earliest_independent(kept.numbers(motion, names), names)
 
 
-def build(system: System) -> Program:
+def program_of(system: System) -> Program:
     """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise."""
     independent = independent_rates(system)
     if set(independent) - {c.name for c in system.coordinates}:

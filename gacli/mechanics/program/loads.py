@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import sympy as sp
 
 from gacli.frame_model import INERTIAL, FrameVector, Load, PointLink
 from gacli.mechanics.program.frames import FrameTree
@@ -24,12 +23,17 @@ from gacli.mechanics.program.vectors import ZV, add, cross, scale
 
 @dataclass
 class UnitLoads:
-    """What acts on one unit, along its frame: the resultant at its centre, the moment about it,
-    and each torque with the body it acts on (for a wheel's spin). Filled load by load."""
+    """What acts on one unit: the forces' components summed per frame they are given in (one
+    resultant at its centre: the weights of a composite body are one product), the moment about
+    the centre and each torque with the body it acts on (for a wheel's spin), along the unit's
+    frame. Filled load by load."""
 
-    force: tuple = ZV
+    forces: dict[str, tuple] = field(default_factory=dict)
     moment: tuple = ZV
     torques: list[tuple[str, tuple]] = field(default_factory=list)
+
+    def resultant(self, tree: FrameTree, frame: str) -> tuple:
+        return along(tree, FrameVector(tuple(self.forces.items())), frame, {})
 
 
 def along(tree: FrameTree, vector: FrameVector, frame: str, rates: dict) -> tuple:
@@ -60,9 +64,11 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
             frame = links[load.point].frame if load.point in links else INERTIAL
             loose.append((load.point, along(tree, load.vector, frame, rates)))
             continue
-        f = along(tree, load.vector, units[i].frame, rates)
-        shares[i].force = add(shares[i].force, f)
+        for source, components in load.vector.terms:
+            components = tuple(c.xreplace(rates) for c in components)
+            shares[i].forces[source] = add(shares[i].forces.get(source, ZV), components)
         if lever is not None:
+            f = along(tree, load.vector, units[i].frame, rates)
             shares[i].moment = add(shares[i].moment, cross(tuple(lever), f))
     return shares, loose
 
