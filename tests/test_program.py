@@ -220,3 +220,47 @@ bodies:
     for ours, theirs in zip(run(program, states), _closed(derivation, states)):
         assert _relative(ours, theirs) < TOLERANCE
 
+
+
+PENDULUM = """
+gacli: 1
+name: loaded_pendulum
+parameters: {m: {value: 1}, l: {value: 2}, g: {value: 9.8}, I: {value: 0.1}, c: {value: 0.3}}
+coordinates: [a, b]
+inputs: [T]
+frames:
+  A: {rotations: [[y, a]]}
+  B: {parent: A, rotations: [[y, b]]}
+points:
+  P: {A: [0, 0, -l]}
+  Q: {from: P, B: [0, 0, -l]}
+  tip: {from: Q, B: [l, 0, 0]}
+bodies:
+  one: {mass: m, position: P, frame: A, inertia: [I, 2*I, I]}
+  two: {mass: m, position: Q, frame: B, inertia: [I, I, 3*I]}
+  block: {mass: m, position: {N: [1, 0, 0]}, frame: N, inertia: [I, I, I]}
+loads:
+  - {force: {B: [T, 0, 0]}, at: tip}
+  - {force: [0, 0, -m*g], at: {from: Q, A: [0.1, 0, 0]}}
+  - {torque: [0, T, 0], body: two}
+potential: m*g*l*cos(a)
+work: -c*dot(b)*db
+"""
+# Loads on the rolling disk that depend on dependent rates (dot(x)), in a frame that leans.
+DISK_LOADS = """
+  - {torque: {leaned: [0, 0.3*dot(yaw), 0]}, body: disk}
+  - {force: {leaned: [0.2*dot(x), 0, 0]}, at: disk}
+"""
+
+
+@pytest.mark.parametrize("text", [PENDULUM, (BICYCLE.parent / "rolling_disk.yaml").read_text(encoding="utf-8")
+                                  .rstrip() + DISK_LOADS], ids=["potential-work-points", "rate-loads"])
+def test_loads_potential_and_work(text):
+    """Forces at points of no body, torques, a body turning with N, a potential, a work form with rates."""
+    system = loads(text)
+    program = build_program(system)
+    assert program is not None, unsupported(system)
+    derivation = derive(system)
+    states = _states(system, derivation.speeds)
+    for ours, theirs in zip(run(program, states), _closed(derivation, states)):
+        assert _relative(ours, theirs) < TOLERANCE
