@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.errors import Location
+from gacli.frame_model import FrameModel
 
 
 @dataclass(frozen=True)
@@ -161,6 +162,9 @@ class System:
     # through products of direction cosines, and M and F are reduced by
     # sin² + cos² = 1 as they are formed (docs/readable.md).
     uses_frames: bool = False
+    # The frames, points, bodies, rolling and loads as declared (gacli.frame_model), when the
+    # file uses frames; None for a format-1 file. Read by gacli.mechanics.program.
+    frames: FrameModel | None = None
 
     @property
     def rate_names(self) -> tuple[str, ...]:

@@ -45,6 +45,7 @@ class Geometry:
                 if values is None:
                     return None
                 terms[frame.text] = values
+        self.parsed[id(vector)] = terms  # kept for the frame model (gacli.loader.frame_records)
         total = F.in_inertial(terms, self.frames) if terms else (sp.S.Zero,) * 3
         if vector.origin is not None:
             origin = self._point_named(vector.origin, f"{where}.from")
@@ -96,6 +97,7 @@ class Geometry:
             if angle is None:
                 return None
             rotations.append((axis.text.lower(), angle))
+        self.parsed[id(decl)] = tuple(rotations)
         return F.oriented(decl.name, frames[parent], rotations, self.differential)
 
     def _points(self) -> dict[str, tuple]:
@@ -221,7 +223,9 @@ class Geometry:
             values = [self.expression(item, where, self.scopes.load) for item in torque.components]
             if any(v is None for v in values):
                 return None
-            return (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
+            vector = (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
+            self.parsed[id(torque)] = {None: vector}  # None: the body's own axes
+            return vector
         frame = self.body_frames.get(body.name)
         if frame is None or frame.text not in self.frames:
             self.error(torque.node, where, f"a torque in frames needs a body with a 'frame'; '{body.name}' has none")

@@ -82,6 +82,7 @@ class RollingContacts:
         centre = self._geometric_centre(decl, body, frame, where)
         if axle is False or centre is None:
             return []
+        self.parsed[id(decl)] = radius
         rows = self._contact_rows(body, frame, surface, plane, centre, radius, axle)
         names = _WHEEL_ROWS if axle is not None else _axis_names(surface, plane)
         return [Constraint(self._row_form(rows[i, :]), self.where_of(decl.node),
@@ -130,6 +131,7 @@ class RollingContacts:
         if local is None:
             self.error(decl.axle.node, f"{where}.axle", "the axle is a list of three components in the body's axes")
             return False
+        self.parsed[id(decl.axle)] = local
         local = sp.Matrix(local)
         dcm = sp.Matrix(frame.dcm) if plane is None else plane.T * sp.Matrix(frame.dcm)
         if problem := axle_problem(local, dcm, self.known):  # else the contact divides by zero: rows lost
@@ -157,6 +159,7 @@ class RollingContacts:
                        f"'{body.name}' has none", "or give it in frames, as {N: [0, 0, e]}")
             return None
         local = self._vector(offset.components, where, self.scopes.constant)
+        self.parsed[id(offset)] = {None: local}  # None: the body's own axes
         return None if local is None else position + sp.Matrix(frame.dcm) * sp.Matrix(local)
 
     def _rolling_frame(self, decl: RollingDecl, body: Body, where: str) -> F.Frame | None:

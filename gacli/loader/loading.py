@@ -17,6 +17,7 @@ import sympy as sp
 from gacli.loader.contact import RollingContacts
 from gacli.loader.bodies import Geometry
 from gacli.loader.forms import Forms
+from gacli.loader.frame_records import frame_model
 from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.read.expr.build import BuildError, Scope, build
@@ -69,6 +70,8 @@ class _Builder(Forms, Geometry, RollingContacts):
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
+    # Parsed pieces of frames, vectors and rolling contacts by id of their declaration, for the frame model.
+    parsed: dict[int, object] = field(default_factory=dict)
 
     @property
     def source(self) -> SourceFile:
@@ -123,6 +126,8 @@ class _Builder(Forms, Geometry, RollingContacts):
         constraints = tuple(c for c in (self._constraint(i, c) for i, c in enumerate(self.decl.constraints)) if c)
         constraints += self._rolling_constraints(bodies)
         independent = self._independent()
+        uses_frames = bool(self.decl.frames or self.decl.points or self.decl.rolling)
+        frames = frame_model(self.decl, self.parsed, bodies) if uses_frames and not self.diagnostics else None
         return System(
             name=self.decl.name, path=self.source.path, sha256=self.source.sha256,
             location=Location(self.source.path, 1, 1),
@@ -133,7 +138,7 @@ class _Builder(Forms, Geometry, RollingContacts):
             independent_location=self.where_of(self.decl.independent_node) if self.decl.independent_node else Location(self.source.path, 1, 1),
             bodies=bodies, forces=forces, torques=torques, work=work,
             potential=potential if potential is not None else sp.S.Zero,
-            uses_frames=bool(self.decl.frames or self.decl.points or self.decl.rolling),
+            uses_frames=uses_frames, frames=frames,
         )
 
     def _check_names(self) -> None:

@@ -1,0 +1,148 @@
+"""Each unit's share of M and F (eqs. 14.17-14.19), from its partial velocities and rest accelerations.
+
+With a = Σ V_r u̇_r + a_rest and α = Σ Ω_r u̇_r + α_rest (eq. 14.14), a unit
+of mass m and inertia I about its centre, whose wheels turn relative to its
+frame by σ about an axis e_a with inertia λ about it, contributes
+
+    M_rs += m V_r·V_s + Ω_r·H_s + Σ σ_r λ (Ω_s,a + σ_s),   H_s = I Ω_s + Σ λ σ_s e_a
+    F_r  += V_r·(f − m a_rest) + Ω_r·(τ − I α_rest − ω × I ω − Σ λ (σ̇ e_a + σ ω × e_a))
+            + Σ σ_r (τ_a − λ (α_rest,a + σ̇))
+
+(f, τ its loads: resultant at the centre, moment and torques); only r ≤ s
+of M is formed, M being symmetric. The partial velocities are the passes
+ρ = e_r + Σ_d β_dr e_d (eq. 14.8); the rest accelerations are the pass with
+all accelerations zero plus the pass ρ = γ of the dependent accelerations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.mechanics.program.loads import UnitLoads
+from gacli.mechanics.program.motion import Motion
+from gacli.mechanics.program.units import Unit, Wheel, unit_inertia
+from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale, unit
+
+
+@dataclass(frozen=True)
+class Passes:
+    """The rates the velocities are formed for: one partial pass per speed, the actual rates, γ."""
+
+    partial: tuple[Pass, ...]
+    actual: Pass
+    gamma: Pass
+
+
+@dataclass(frozen=True)
+class Sums:
+    """The terms of M (r ≤ s) and F gathered from every unit and load, summed once at the end."""
+
+    M: list
+    F: list
+
+    @staticmethod
+    def empty(k: int) -> "Sums":
+        return Sums([[[] for _ in range(k)] for _ in range(k)], [[] for _ in range(k)])
+
+
+@dataclass(frozen=True)
+class UnitMotion:
+    """A unit's partial velocities V, Ω and spins σ (per speed), actual ω, rest accelerations a, α."""
+
+    V: list
+    W: list
+    sigma: list
+    omega: tuple
+    a_rest: tuple
+    alpha_rest: tuple
+
+
+def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
+    return sp.Add(*(s * motion.tree.rate(e, rates) for e, s in wheel.edges))
+
+
+def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
+    tape, tree = motion.tape, motion.tree
+    tape.stage = "partials"
+    V = [motion.velocity(u.point, p, u.frame) for p in passes.partial]
+    W = [tree.omega(u.frame, p) for p in passes.partial] if u.rigid else []
+    sigma = [[_sigma(motion, w, p) for p in passes.partial] for w in u.wheels]
+    tape.stage = "rest"
+    a_rest = tape.vec(add(motion.acceleration0(u.point, passes.actual, u.frame),
+                          motion.velocity(u.point, passes.gamma, u.frame)))
+    omega = alpha = None
+    if u.rigid:
+        omega = tree.omega(u.frame, passes.actual)
+        alpha = tape.vec(add(tree.alpha0(u.frame, passes.actual), tree.omega(u.frame, passes.gamma)))
+    return UnitMotion(V, W, sigma, omega, a_rest, alpha)
+
+
+def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Sums) -> None:
+    """Add the unit's terms to ``sums`` (see the module)."""
+    tape = motion.tape
+    tape.stage = "body setup"
+    inertia = unit_inertia(motion.tree, u) if u.rigid else None
+    lam = [tape.let(w.inertia) for w in u.wheels]
+    m = unit_motion(motion, u, passes)
+    tape.stage = "M"
+    mass = tape.let(u.mass)
+    k = len(passes.partial)
+    for r in range(k):
+        for s in range(r, k):
+            sums.M[r][s].append(mass * tape.let(dot(m.V[r], m.V[s])))
+    if inertia is not None:
+        _rotation_mass(motion, u, m, inertia, lam, sums)
+    tape.stage = "F"
+    effective = tape.vec(add(loads.resultant(motion.tree, u.frame), scale(-mass, m.a_rest)))
+    for r in range(k):
+        sums.F[r].append(tape.let(dot(m.V[r], effective)))
+    if inertia is not None:
+        _rotation_forcing(motion, u, m, inertia, lam, loads, passes, sums)
+
+
+def _rotation_mass(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list, sums: Sums) -> None:
+    """Ω_r·H_s + Σ σ_r g_s, H_s = I Ω_s + Σ λ σ_s e_a, g_s = λ (Ω_s,a + σ_s)."""
+    tape, k = motion.tape, len(m.V)
+    H = []
+    for s in range(k):
+        h = matrix_times(inertia, m.W[s])
+        for j, wheel in enumerate(u.wheels):
+            h = add(h, scale(lam[j] * m.sigma[j][s], unit(wheel.axis)))
+        H.append(tape.vec(h))
+    g = [[tape.let(lam[j] * (m.W[s][w.axis] + m.sigma[j][s])) for s in range(k)] for j, w in enumerate(u.wheels)]
+    for r in range(k):
+        for s in range(r, k):
+            sums.M[r][s].append(tape.let(dot(m.W[r], H[s])))
+            sums.M[r][s].extend(m.sigma[j][r] * g[j][s] for j in range(len(u.wheels)) if m.sigma[j][r] != 0)
+
+
+def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list, loads: UnitLoads,
+                      passes: Passes, sums: Sums) -> None:
+    """Ω_r·(τ − I α − ω × Iω − Σ λ(σ̇ e_a + σ ω × e_a)) + Σ σ_r (τ_a − λ (α_a + σ̇))."""
+    tape, k = motion.tape, len(m.V)
+    Iw = tape.vec(matrix_times(inertia, m.omega))
+    h = add(matrix_times(inertia, m.alpha_rest), cross(m.omega, Iw))
+    rates = []
+    for j, wheel in enumerate(u.wheels):
+        now, rest = (tape.let(_sigma(motion, wheel, p)) for p in (passes.actual, passes.gamma))
+        rates.append(rest)
+        h = add(h, scale(lam[j], add(scale(rest, unit(wheel.axis)), scale(now, cross(m.omega, unit(wheel.axis))))))
+    torque = add(scale(-1, h), *(t for _, t in loads.torques), _moment(motion, loads.moment))
+    torque = tape.vec(torque)
+    for r in range(k):
+        sums.F[r].append(tape.let(dot(m.W[r], torque)))
+    for j, wheel in enumerate(u.wheels):
+        own = sp.Add(*(t[wheel.axis] for body, t in loads.torques if body == wheel.body))
+        spin = tape.let(own - lam[j] * (m.alpha_rest[wheel.axis] + rates[j]))
+        for r in range(k):
+            if m.sigma[j][r] != 0:
+                sums.F[r].append(m.sigma[j][r] * spin)
+
+
+def _moment(motion: Motion, moment: tuple) -> tuple:
+    """The loads' moment about the centre, or nothing where it vanishes (gravity on a composite)."""
+    if all(motion.tape.vanishes(c) for c in moment):
+        return (sp.S.Zero,) * 3
+    return motion.tape.vec(moment)

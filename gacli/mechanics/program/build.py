@@ -1,0 +1,162 @@
+"""The whole right-hand side as a straight-line program: rows, β, q̇, γ, then M and F unit by unit.
+
+The chapter's steps, each one a few numbers at a time: the rolling rows
+A = [A_d | A_i] (eq. 14.1) over the rates left once a free root is carried
+by its contact; β = −A_d⁻¹ A_i and the dependent rates (eq. 14.7); the
+kinematic equations; γ = −A_d⁻¹ b₀ from the rows' velocity-product term
+b₀ (eq. 14.14); then each unit's share of M and F (eq. 14.19), the loads'
+virtual work (eq. 14.13), and the potential's and the work form's.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from gacli.algebra import symbols as S
+from gacli.algebra.matrices import rank
+from gacli.frame_model import INERTIAL
+from gacli.mechanics.program import rows as R
+from gacli.mechanics.program.assemble import Passes, Sums, assemble
+from gacli.mechanics.program.contacts import contact
+from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.loads import distribute
+from gacli.mechanics.program.motion import Motion
+from gacli.mechanics.program.record import Program, finish
+from gacli.mechanics.program.solve import Solver, too_large
+from gacli.mechanics.program.support import Unsupported
+from gacli.mechanics.program.tape import Tape
+from gacli.mechanics.program.units import units
+from gacli.mechanics.program.vectors import ONE, Pass, dot
+from gacli.model import System
+
+
+def _setup(system: System, independent: tuple[str, ...] | None) -> tuple[Motion, list, str | None]:
+    """The tape, frames, contacts and points; the free root only once the independent rates are known."""
+    model = system.frames
+    coordinates = {c.name: S.value(c.name) for c in system.coordinates}
+    tree = FrameTree(Tape(), model.edges, coordinates)
+    tree.tape.stage = "rows"
+    links = {p.name: p for p in model.points}
+    bodies = {b.name: b for b in model.bodies}
+    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values())) for r in model.rolling]
+    root = R.free_root(links, contacts, coordinates, independent) if independent is not None else None
+    return Motion(tree, links, coordinates, contacts, root), contacts, root
+
+
+def independent_rates(system: System) -> tuple[str, ...]:
+    """The file's independent rates, or gacli's automatic choice from the rows over every coordinate."""
+    if system.independent is not None:
+        return tuple(system.independent)
+    motion, contacts, _ = _setup(system, None)
+    names = [c.name for c in system.coordinates]
+    kept = R.rows(motion, contacts, names)
+    return R.earliest_independent(kept.numbers(motion, names), names)
+
+
+def program_of(system: System) -> Program:
+    """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise."""
+    independent = independent_rates(system)
+    if set(independent) - {c.name for c in system.coordinates}:
+        raise Unsupported("an independent rate is not a coordinate's")
+    motion, contacts, root = _setup(system, independent)
+    names = [c.name for c in system.coordinates]
+    at_root = R.root_coordinates(motion.links, motion.root, motion.coordinates)
+    reduced = [q for q in names if q not in at_root]
+    dependent = [q for q in reduced if q not in independent]
+    others = [c for c in contacts if root is None or c is not root[1]]
+    kept = R.rows(motion, others, reduced)
+    if len(kept.directions) != len(dependent):
+        raise Unsupported(f"the rolling rows determine {len(kept.directions)} rates, not the "
+                          f"{len(dependent)} dependent ones")
+    solver, passes = _rates(motion, kept, independent, dependent)
+    rates = _kinematics(motion, names, at_root, passes.actual)
+    passes = _gamma(motion, kept, solver, dependent, passes)
+    return _dynamics(system, motion, passes, rates, at_root)
+
+
+def _rates(motion: Motion, kept: R.Rows, independent, dependent) -> tuple[Solver, Passes]:
+    """β from A_d β = −A_i (eq. 14.7), the dependent rates β u, and the partial passes (eq. 14.8)."""
+    tape = motion.tape
+    tape.stage = "solve"
+    n = len(dependent)
+    A_d = [[kept.columns[q][i] for q in dependent] for i in range(n)]
+    if too_large(A_d):
+        raise Unsupported("the rolling rows couple more dependent rates than the adjugate solve takes")
+    numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
+    if n and rank(numeric) < n:
+        raise Unsupported("the rolling rows do not determine the dependent rates from the independent ones")
+    solver = Solver(tape, A_d)
+    beta = {}
+    for qi in independent:
+        for qd, x in zip(dependent, solver.solve([-kept.columns[qi][i] for i in range(n)])):
+            beta[(qd, qi)] = x
+    rates = {qi: S.rate(qi) for qi in independent}
+    for qd in dependent:
+        rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent)))
+    partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
+    return solver, Passes(partial, Pass("actual", rates), Pass("gamma", {}))
+
+
+def _kinematics(motion: Motion, names: list[str], at_root: dict, actual: Pass) -> dict[str, sp.Expr]:
+    """q̇ of every coordinate: the solved rates, and the free root's N components (eq. 14.20)."""
+    tape = motion.tape
+    tape.stage = "kinematics"
+    rates = {q: actual.rate(q) for q in names if q not in at_root}
+    if motion.root is not None:
+        v = motion.velocity(motion.root, actual, INERTIAL)
+        for i, x in enumerate(motion.links[motion.root].components):
+            if i not in at_root.values() and not tape.vanishes(v[i]):
+                raise Unsupported(f"the root point '{motion.root}' moves along N's {'xyz'[i]} axis, where it "
+                                  "has no coordinate")
+        rates.update({q: v[i] for q, i in at_root.items()})
+    return {q: rates[q] for q in names}
+
+
+def _gamma(motion: Motion, kept: R.Rows, solver: Solver, dependent, passes: Passes) -> Passes:
+    """γ = −A_d⁻¹ b₀, b₀ the rows' velocity-product term (eq. 14.14); the pass ρ = γ."""
+    tape = motion.tape
+    tape.stage = "gamma"
+    acceleration = {}
+    for c, _ in kept.directions:
+        if c.body.name not in acceleration:
+            acceleration[c.body.name] = motion.contact_acceleration0(c, passes.actual)
+    b0 = [tape.let(dot(e, acceleration[c.body.name])) for c, e in kept.directions]
+    gamma = dict(zip(dependent, solver.solve([-b for b in b0]))) if dependent else {}
+    return Passes(passes.partial, passes.actual, Pass("gamma", gamma))
+
+
+def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_root: dict) -> Program:
+    """M and F (eq. 14.19): every unit, the loads at points of no unit, the potential and work."""
+    tape, k = motion.tape, len(passes.partial)
+    coordinates = set(motion.coordinates.values())
+    sums = Sums.empty(k)
+    tape.stage = "body setup"
+    groups = units(motion.tree, motion.links, system.frames.bodies, coordinates)
+    substitution = {S.rate(q): e for q, e in rates.items()}
+    tape.stage = "loads"
+    shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads, substitution, coordinates)
+    for u, share in zip(groups, shares):
+        assemble(motion, u, share, passes, sums)
+    tape.stage = "F"
+    for point, f in loose:
+        for r, p in enumerate(passes.partial):
+            sums.F[r].append(tape.let(dot(motion.velocity(point, p, motion.links[point].frame), f)))
+    _potential_and_work(system, motion, passes, at_root, substitution, sums)
+    return finish(tape, rates, sums, k)
+
+
+def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root: dict, substitution: dict,
+                        sums: Sums) -> None:
+    """F_r += Σ_q (c_q − ∂V/∂q) δq_q/δu_r (eq. 14.13), the work form's coefficients c_q."""
+    tape = motion.tape
+    names = [c.name for c in system.coordinates]
+    coefficient = {q: -sp.diff(system.potential, S.value(q)) for q in names}
+    if system.work is not None:
+        for q in names:
+            coefficient[q] += system.work.coefficient(q).xreplace(substitution)
+    coefficient = {q: tape.let(c) for q, c in coefficient.items() if c != 0}
+    for r, p in enumerate(passes.partial):
+        root = motion.velocity(motion.root, p, INERTIAL) if set(coefficient) & set(at_root) else None
+        for q, c in coefficient.items():
+            sums.F[r].append(c * (root[at_root[q]] if q in at_root else p.rate(q)))

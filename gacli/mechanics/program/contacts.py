@@ -1,0 +1,131 @@
+"""Rolling contacts on N's ground plane: where the body touches, and the velocity of its material point there.
+
+A wheel (axle a along a frame axis) touches at o = −r (n − (n·a)a)/|n − (n·a)a|
+from its geometric centre, n = N.z, the wheel above the plane (as
+gacli.loader.frames.contact_point); a sphere at o = −r n. Everything is
+formed in the wheel's *non-spinning frame* S: the highest frame reached
+from the body's by rotations about the axle, where o depends on the
+lean only. The material point at the contact moves with
+
+    v_C = v_P + ω_S × (d + c + o) + s a × (c + o),
+
+P the point the centre hangs from (d its offset along S), c the geometric
+centre's offset from the centre of mass (turned into S) and s the spin
+rate about the axle. Rolling without slipping is v_C = 0 (eq. 14.1).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.frame_model import INERTIAL, BodyPlacement, RollingContact
+from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.vectors import ZERO, ZV, Pass, add, cross, dot, scale, unit
+
+
+@dataclass(frozen=True)
+class Contact:
+    """A rolling contact's frames, points and geometry in its non-spinning frame ``frame`` (S)."""
+
+    body: BodyPlacement
+    radius: sp.Expr
+    frame: str
+    axis: int | None  # the axle's axis of S; None for a sphere
+    spin_edges: tuple[str, ...]  # the edges between the body's frame and S (all about the axle)
+    point: str | None  # P
+    offset: tuple  # d, along S
+    centre: tuple  # c along the body's axes
+    o: tuple  # the contact from the geometric centre, along S
+    perp: tuple | None  # n − (n·a)a along S where it is not a constant direction
+    inverse: sp.Expr | None  # 1/|n − (n·a)a|
+
+
+def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingContact,
+            coordinates: set) -> Contact:
+    """The contact of ``rolling``, its geometry written on the tree's tape."""
+    frame, spins, axis = body.frame, [], None
+    if rolling.axle is not None:
+        axis = next(i for i, c in enumerate(rolling.axle) if c != 0)
+        while frame != INERTIAL and tree.edges[frame].axis == axis:
+            spins.append(frame)
+            frame = tree.edges[frame].parent
+    link = links[body.point]
+    fixed = not any(c.free_symbols & coordinates for c in link.components)
+    point, offset = (link.parent, link.components) if link.frame == frame and fixed else (body.point, ZV)
+    centre = rolling.centre.terms[0][1] if rolling.centre.terms else ZV
+    o, perp, inverse = _below(tree, frame, axis, rolling.radius)
+    return Contact(body, rolling.radius, frame, axis, tuple(spins), point, tuple(offset), tuple(centre),
+                   o, perp, inverse)
+
+
+def _below(tree: FrameTree, frame: str, axis: int | None, radius: sp.Expr):
+    """(o, n − (n·a)a, 1/|n − (n·a)a|) along S; a constant direction needs no root."""
+    n = tree.nz(frame)
+    if axis is None:
+        return tree.tape.vec(scale(-radius, n)), None, None
+    perp = tuple(ZERO if i == axis else n[i] for i in range(3))
+    live = [i for i in range(3) if perp[i] != 0]
+    if len(live) == 1:  # the wheel's plane holds N.z: o = −r e (the wheel above the plane)
+        return tuple(-radius if i == live[0] else ZERO for i in range(3)), None, None
+    inverse = tree.tape.let(1 / sp.sqrt(sp.Add(*(x ** 2 for x in perp))))
+    return tree.tape.vec([-radius * x * inverse for x in perp]), perp, inverse
+
+
+def spin(tree: FrameTree, c: Contact, rates: Pass) -> sp.Expr:
+    return sp.Add(*(tree.rate(e, rates) for e in c.spin_edges))
+
+
+def centre_in_s(tree: FrameTree, c: Contact) -> tuple:
+    """The centre's offset c along S (it turns with the spin)."""
+    if c.centre == ZV:
+        return ZV
+    return tree.express(c.centre, c.body.frame, c.frame, key=("centre", c.body.name))
+
+
+def o_rate(tree: FrameTree, c: Contact, actual: Pass) -> tuple:
+    """The rate of o's components along S: N.z is fixed, so its components turn as ṅ = n × ω_S."""
+    tape, n = tree.tape, tree.nz(c.frame)
+    if c.axis is None:
+        return tape.vec(scale(-c.radius, cross(n, tree.omega(c.frame, actual))))
+    if c.perp is None:
+        return ZV
+    ndot = tape.vec(cross(n, tree.omega(c.frame, actual)))
+    ndot = [ZERO if i == c.axis else ndot[i] for i in range(3)]
+    dinv = tape.let(-c.inverse ** 3 * dot(c.perp, ndot))
+    return tape.vec([-c.radius * (nd * c.inverse + x * dinv) for x, nd in zip(c.perp, ndot)])
+
+
+def velocity(tree: FrameTree, c: Contact, v_point: tuple, rates: Pass) -> tuple:
+    """v_C along S for the pass: v_P + ω_S × (d + c + o) + s a × (c + o)."""
+    cs = centre_in_s(tree, c)
+    out = add(v_point, cross(tree.omega(c.frame, rates), add(c.offset, cs, c.o)))
+    s = spin(tree, c, rates) if c.axis is not None else ZERO
+    return add(out, scale(s, cross(unit(c.axis), add(cs, c.o)))) if s != 0 else out
+
+
+def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot: tuple) -> tuple:
+    """d/dt of v_C with all accelerations zero (the rows' velocity-product term), along S:
+    a_P + α × D + ω × (Ḋ + ω × D) + s (a × Ḋ + ω × (a × (c + o))), D = d + c + o, Ḋ = s a × c + ȯ."""
+    tape = tree.tape
+    cs = centre_in_s(tree, c)
+    w, al = tree.omega(c.frame, actual), tree.alpha0(c.frame, actual)
+    s = spin(tree, c, actual) if c.axis is not None else ZERO
+    big_d = add(c.offset, cs, c.o)
+    ddot = add(scale(s, cross(unit(c.axis), cs)), odot) if s != 0 and cs != ZV else odot
+    ddot = tape.vec(ddot)
+    out = add(a_point, cross(al, big_d), cross(w, tape.vec(add(ddot, cross(w, big_d)))))
+    if s != 0:
+        a = unit(c.axis)
+        out = add(out, scale(s, add(cross(a, ddot), cross(w, cross(a, add(cs, c.o))))))
+    return out
+
+
+def row_vectors(tree: FrameTree, c: Contact) -> list[tuple]:
+    """The directions v_C = 0 is taken along, in S: for a wheel forward (a × o), along the axle and
+    vertical (N.z): the spin moves the contact forward only, a turn about N.z horizontally only,
+    so the rows are as sparse as the geometry allows. A sphere's along S's axes."""
+    if c.axis is None:
+        return [unit(0), unit(1), unit(2)]
+    return [tree.tape.vec(cross(unit(c.axis), c.o)), unit(c.axis), tree.nz(c.frame)]

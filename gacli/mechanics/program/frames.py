@@ -1,0 +1,132 @@
+"""The frames as a tree of simple rotations: vectors carried between frames, ω and α of each frame.
+
+A vector lives in one frame and is carried to another one rotation at a
+time (4 products and 2 sums each); successive rotations about one axis are
+merged into one, by the sum of their angles (a bicycle's head tube turned
+by pitch + head angle). ω of a frame comes from its parent's by the
+transport theorem, ω_F = Rᵀ ω_G + Σ θ̇ e, for any pass of rates (see
+:class:`~gacli.mechanics.program.vectors.Pass`); α with all accelerations
+zero, the velocity-product part of eq. (14.14), is α_F = Rᵀ α_G + (Σ θ̇) ω_F × e.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.frame_model import INERTIAL, FrameEdge
+from gacli.mechanics.program.tape import Tape
+from gacli.mechanics.program.vectors import ONE, ZERO, ZV, Pass, add, cross, scale, unit
+
+
+class FrameTree:
+    """The frame tree on a tape; a builder object whose caches write each ω, α, N.z once per frame and pass."""
+
+    def __init__(self, tape: Tape, edges: tuple[FrameEdge, ...], coordinates: dict[str, sp.Symbol]) -> None:
+        self.tape = tape
+        self.edges = {e.name: e for e in edges}
+        # θ̇ of each edge as Σ (∂θ/∂q) q̇: the angles are linear in the coordinates (support.py).
+        self.grad = {e.name: {q: sp.diff(e.angle, s) for q, s in coordinates.items() if e.angle.has(s)} for e in edges}
+        self._omega: dict = {}
+        self._alpha: dict = {}
+        self._nz: dict = {INERTIAL: (ZERO, ZERO, ONE)}
+        self._carried: dict = {}
+
+    def chain(self, frame: str) -> list[str]:
+        """The frame and its ancestors up to N."""
+        out = [frame]
+        while frame != INERTIAL:
+            frame = self.edges[frame].parent
+            out.append(frame)
+        return out
+
+    def path(self, src: str, dst: str) -> list[tuple[int, sp.Expr]]:
+        """The rotations (axis, angle) taking components along src to components along dst,
+        consecutive ones about one axis merged."""
+        a, b = self.chain(src), self.chain(dst)
+        common = next(f for f in a if f in b)
+        steps = [(self.edges[f].axis, self.edges[f].angle) for f in a[:a.index(common)]]
+        steps += [(self.edges[f].axis, -self.edges[f].angle) for f in reversed(b[:b.index(common)])]
+        merged: list[tuple[int, sp.Expr]] = []
+        for axis, angle in steps:
+            if merged and merged[-1][0] == axis:
+                merged[-1] = (axis, merged[-1][1] + angle)
+            else:
+                merged.append((axis, angle))
+        return [(axis, angle) for axis, angle in merged if angle != 0]
+
+    def turn(self, axis: int, angle: sp.Expr, v) -> tuple:
+        """R(angle) v about a frame axis (v_parent = R v_child); cos and sin of the angle named once."""
+        c, s = self.tape.let(sp.cos(angle)), sp.sin(angle)
+        s = -self.tape.let(-s) if s.could_extract_minus_sign() else self.tape.let(s)
+        j, k = (axis + 1) % 3, (axis + 2) % 3
+        out = list(v)
+        out[j], out[k] = c * v[j] - s * v[k], s * v[j] + c * v[k]
+        return self.tape.vec(out)
+
+    def express(self, v, src: str, dst: str, key=None) -> tuple:
+        """v's components along dst, from its components along src (``key``: remember the result)."""
+        if src == dst:
+            return tuple(v)
+        if key is not None and (key, dst) in self._carried:
+            return self._carried[(key, dst)]
+        out = tuple(v)
+        for axis, angle in self.path(src, dst):
+            out = self.turn(axis, angle, out)
+        if key is not None:
+            self._carried[(key, dst)] = out
+        return out
+
+    def group(self, frame: str) -> tuple[str, int, list[str]]:
+        """The frame's nearest ancestor G not reached from it by rotations about its own last axis:
+        (G, the axis, the edges between)."""
+        e = self.edges[frame]
+        edges, top = [frame], e.parent
+        while top != INERTIAL and self.edges[top].axis == e.axis:
+            edges.append(top)
+            top = self.edges[top].parent
+        return top, e.axis, edges
+
+    def rate(self, edge: str, rates: Pass) -> sp.Expr:
+        """θ̇ of one edge for the pass's coordinate rates."""
+        return sp.Add(*(k * rates.rate(q) for q, k in self.grad[edge].items()))
+
+    def omega(self, frame: str, rates: Pass) -> tuple:
+        """ω of the frame along its own axes for the pass: ω_F = Rᵀ ω_G + Σ θ̇ e."""
+        if frame == INERTIAL:
+            return ZV
+        key = (frame, rates.key)
+        if key not in self._omega:
+            top, axis, edges = self.group(frame)
+            w = list(self.express(self.omega(top, rates), top, frame))
+            w[axis] = w[axis] + sp.Add(*(self.rate(e, rates) for e in edges))
+            self._omega[key] = self.tape.vec(w)
+        return self._omega[key]
+
+    def alpha0(self, frame: str, actual: Pass) -> tuple:
+        """α of the frame with all accelerations zero: α_F = Rᵀ α_G + (Σ θ̇) ω_F × e."""
+        if frame == INERTIAL:
+            return ZV
+        if frame not in self._alpha:
+            top, axis, edges = self.group(frame)
+            a = self.express(self.alpha0(top, actual), top, frame)
+            rate = sp.Add(*(self.rate(e, actual) for e in edges))
+            if rate != 0:
+                a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
+            self._alpha[frame] = self.tape.vec(a)
+        return self._alpha[frame]
+
+    def nz(self, frame: str) -> tuple:
+        """N's z axis along the frame's axes (a turn about it changes nothing: from the group's top)."""
+        if frame not in self._nz:
+            top = self.group(frame)[0]
+            self._nz[frame] = self.express(self.nz(top), top, frame)
+        return self._nz[frame]
+
+    def step(self, edge: str, v, up: bool) -> tuple:
+        """v carried across one edge: from the edge's frame to its parent (``up``) or back."""
+        e = self.edges[edge]
+        return self.turn(e.axis, e.angle if up else -e.angle, v)
+
+    def constant(self, edge: str) -> bool:
+        """The edge's angle depends on no coordinate."""
+        return not self.grad[edge]

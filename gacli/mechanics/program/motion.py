@@ -1,0 +1,117 @@
+"""Velocities and accelerations of points by passes, and the free root the rolling carries.
+
+A point is a chain of links (gacli.frame_model.PointLink); its velocity for
+a pass of rates ρ is its parent's plus ω × p plus the rate of p's own
+components (transport theorem), along the frame of its last link; its
+acceleration with all accelerations zero (the velocity-product part of
+eq. 14.14) is a_parent + α₀ × p + ω × (ω × p) + 2 ω × ṗ + p̈₀.
+
+A *free root* is a point at N's origin whose N components are dependent
+coordinates, (x, y, 0) of a vehicle on the ground, above a rolling contact:
+the contact's three rows solved for those coordinates are the root's
+velocity, v_P0 = −(v_C − v_P0), so that x and y never enter the rows of
+the other contacts, and ẋ, ẏ cost a few products.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.frame_model import INERTIAL, PointLink
+from gacli.mechanics.program import contacts as C
+from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.vectors import ZV, Pass, add, cross, scale
+
+
+class Motion:
+    """Points and contacts over a frame tree; a builder object whose caches write each vector once per pass."""
+
+    def __init__(self, tree: FrameTree, links: dict[str, PointLink], coordinates: dict[str, sp.Symbol],
+                 contacts: list[C.Contact], root: tuple[str, C.Contact] | None) -> None:
+        self.tree, self.tape, self.links, self.coordinates = tree, tree.tape, links, coordinates
+        self.contacts = contacts
+        self.root, self.root_contact = root if root is not None else (None, None)
+        self._velocity: dict = {}
+        self._acceleration: dict = {}
+        self._odot: dict = {}
+
+    def frame_of(self, point: str | None) -> str:
+        """The frame a point's velocity is formed along: its last link's (the root's: its contact's S)."""
+        if point is None:
+            return INERTIAL
+        if point == self.root:
+            return self.root_contact.frame
+        return self.links[point].frame
+
+    def velocity(self, point: str | None, rates: Pass, frame: str | None = None, zero_root: bool = False) -> tuple:
+        """v of the point for the pass, along ``frame`` (default: :meth:`frame_of`); ``zero_root``: the
+        root held still (v_C − v_P0 of the root's contact)."""
+        if point is None:
+            return ZV
+        key = (point, rates.key, zero_root)
+        if key not in self._velocity:
+            self._velocity[key] = self._link_velocity(point, rates, zero_root)
+        v, f = self._velocity[key]
+        return v if frame is None else self.tree.express(v, f, frame, key=("v",) + key)
+
+    def _link_velocity(self, point: str, rates: Pass, zero_root: bool) -> tuple[tuple, str]:
+        link = self.links[point]
+        if point == self.root:
+            c = self.root_contact
+            if zero_root:
+                return ZV, c.frame
+            return self.tape.vec(scale(-1, self.contact_velocity(c, rates, zero_root=True))), c.frame
+        parent = self.velocity(link.parent, rates, link.frame, zero_root)
+        v = add(parent, cross(self.tree.omega(link.frame, rates), link.components), self._moving(link, rates))
+        return self.tape.vec(v), link.frame
+
+    def _moving(self, link: PointLink, rates: Pass) -> tuple:
+        """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q."""
+        return tuple(sp.Add(*(sp.diff(x, s) * rates.rate(q) for q, s in self.coordinates.items() if x.has(s)))
+                     for x in link.components)
+
+    def acceleration0(self, point: str | None, actual: Pass, frame: str | None = None,
+                      zero_root: bool = False) -> tuple:
+        """a of the point with all accelerations zero, along ``frame``."""
+        if point is None:
+            return ZV
+        key = (point, zero_root)
+        if key not in self._acceleration:
+            self._acceleration[key] = self._link_acceleration(point, actual, zero_root)
+        a, f = self._acceleration[key]
+        return a if frame is None else self.tree.express(a, f, frame, key=("a",) + key)
+
+    def _link_acceleration(self, point: str, actual: Pass, zero_root: bool) -> tuple[tuple, str]:
+        link = self.links[point]
+        if point == self.root:
+            c = self.root_contact
+            if zero_root:
+                return ZV, c.frame
+            return self.tape.vec(scale(-1, self.contact_acceleration0(c, actual, zero_root=True))), c.frame
+        parent = self.acceleration0(link.parent, actual, link.frame, zero_root)
+        w, al = self.tree.omega(link.frame, actual), self.tree.alpha0(link.frame, actual)
+        p = link.components
+        moving = self.tape.vec(self._moving(link, actual))
+        inner = self.tape.vec(add(cross(w, p), scale(2, moving)))
+        a = add(parent, cross(al, p), cross(w, inner), self._moving2(link, actual))
+        return self.tape.vec(a), link.frame
+
+    def _moving2(self, link: PointLink, actual: Pass) -> tuple:
+        """p̈ with all accelerations zero: Σ ∂²p/∂q∂q' q̇ q̇'."""
+        out = []
+        for x in link.components:
+            first = sp.Add(*(sp.diff(x, s) * actual.rate(q) for q, s in self.coordinates.items() if x.has(s)))
+            out.append(sp.Add(*(sp.diff(first, s) * actual.rate(q) for q, s in self.coordinates.items()
+                                if first.has(s))))
+        return tuple(out)
+
+    def contact_velocity(self, c: C.Contact, rates: Pass, zero_root: bool = False) -> tuple:
+        """v of the body's material point at the contact, along S."""
+        return C.velocity(self.tree, c, self.velocity(c.point, rates, c.frame, zero_root), rates)
+
+    def contact_acceleration0(self, c: C.Contact, actual: Pass, zero_root: bool = False) -> tuple:
+        """Its derivative with all accelerations zero, along S."""
+        if c.body.name not in self._odot:
+            self._odot[c.body.name] = C.o_rate(self.tree, c, actual)
+        a_point = self.acceleration0(c.point, actual, c.frame, zero_root)
+        return C.acceleration(self.tree, c, a_point, actual, self._odot[c.body.name])

@@ -1,0 +1,103 @@
+"""The program as a record: assignments in evaluation order, and the outputs q̇, M, F over them.
+
+M u̇ = F in the independent speeds (eq. 14.19) and q̇ of every coordinate
+(eqs. 14.7, 14.20), each output a state symbol, a number, or a symbol the
+assignments define, so that code can evaluate the assignments in order and
+read the outputs off. :func:`inline` gives closed forms instead, as
+expression graphs sharing their subexpressions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.algebra.graph import free_symbols, postorder, substitute
+from gacli.mechanics.program.tape import Tape
+
+
+@dataclass(frozen=True)
+class Program:
+    """A straight-line program for q̇, M and F (see the module)."""
+
+    assignments: tuple[tuple[sp.Symbol, sp.Expr], ...]  # in evaluation order; each symbol assigned once
+    rates: tuple[tuple[str, sp.Expr], ...]  # (coordinate, q̇), every coordinate, in declaration order
+    mass_matrix: tuple[sp.Expr, ...]  # k × k entries, row-major (symmetric)
+    forcing: tuple[sp.Expr, ...]  # k entries
+    stages: tuple[tuple[str, int], ...]  # (stage, number of assignments written in it), in order
+
+    @property
+    def k(self) -> int:
+        return len(self.forcing)
+
+    def __repr__(self) -> str:
+        # One line: the dataclass repr would print every assignment.
+        return (f"<Program: {len(self.assignments)} assignments; {len(self.rates)} rates, "
+                f"M {self.k}x{self.k}, F {self.k}x1>")
+
+
+def finish(tape: Tape, rates: dict[str, sp.Expr], sums, k: int) -> Program:
+    """Sum M (r ≤ s, mirrored) and F, and keep only the assignments the outputs need."""
+    tape.stage = "M"
+    M = [[None] * k for _ in range(k)]
+    for r in range(k):
+        for s in range(r, k):
+            M[r][s] = M[s][r] = tape.let(sp.Add(*sums.M[r][s]))
+    tape.stage = "F"
+    F = [tape.let(sp.Add(*sums.F[r])) for r in range(k)]
+    outputs = [*rates.values(), *(x for row in M for x in row), *F]
+    assignments = _needed(tape.assignments, outputs)
+    stages: dict[str, int] = {}
+    for _, _, stage in assignments:
+        stages[stage] = stages.get(stage, 0) + 1
+    return Program(tuple((name, e) for name, e, _ in assignments), tuple(rates.items()),
+                   tuple(x for row in M for x in row), tuple(F), tuple(stages.items()))
+
+
+def _needed(assignments: list, outputs: list) -> list:
+    """The assignments the outputs depend on, in order: the others were written to test or to choose
+    (a row entry that vanished, a moment that cancelled)."""
+    live = free_symbols(outputs)
+    kept = []
+    for name, e, stage in reversed(assignments):
+        if name in live:
+            kept.append((name, e, stage))
+            live |= e.free_symbols
+    return kept[::-1]
+
+
+def inline(program: Program, evaluate: bool = False) -> tuple[list[sp.Expr], list[sp.Expr], list[sp.Expr]]:
+    """(q̇, M, F) with the assignments substituted, as expression graphs sharing their subexpressions.
+
+    Sums, products and powers are rebuilt unevaluated: SymPy's evaluation
+    flattens a sum into the sum it is a term of and distributes a number
+    over a sum, so that a shared subexpression is copied into each of its
+    uses (the bicycle: 1,053 operations as a program, 1,540 inlined with
+    ``evaluate=True``, 1,048 without). The unevaluated forms have the same
+    values; ``evaluate=True`` gives SymPy's canonical ones.
+    """
+    values: dict[sp.Symbol, sp.Expr] = {}
+    for name, e in program.assignments:
+        values[name] = _substituted([e], values, evaluate)[0]
+    outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
+    outputs = _substituted(outputs, values, evaluate)
+    n, kk = len(program.rates), program.k * program.k
+    return outputs[:n], outputs[n:n + kk], outputs[n + kk:]
+
+
+def _substituted(exprs: list[sp.Expr], values: dict, evaluate: bool) -> list[sp.Expr]:
+    """gacli.algebra.graph.substitute, rebuilding sums, products and powers unevaluated unless ``evaluate``."""
+    if evaluate:
+        return substitute(exprs, values)
+    rebuilt: dict[sp.Basic, sp.Basic] = {}
+    for node in postorder(exprs):
+        if node in values:
+            rebuilt[node] = values[node]
+        elif node.args and any(rebuilt[a] is not a for a in node.args):
+            args = [rebuilt[a] for a in node.args]
+            plain = isinstance(node, (sp.Add, sp.Mul, sp.Pow))
+            rebuilt[node] = node.func(*args, evaluate=False) if plain else node.func(*args)
+        else:
+            rebuilt[node] = node
+    return [rebuilt[e] for e in exprs]

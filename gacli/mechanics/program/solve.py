@@ -1,0 +1,90 @@
+"""A_d ṙ_d = b for the dependent rates (eq. 14.7) and their accelerations' rest (eq. 14.14), by numbers.
+
+A_d is fixed and solved for several right-hand sides (one per independent
+speed for β, one for γ). Rows with one unknown left are solved first, in
+the triangular order the vanishing entries give; each such pivot is a
+factor of det A_d, so it vanishes only where A_d is singular. What remains
+is solved by the adjugate (cofactors from memoised minors), dividing only
+by its determinant, as gacli.algebra.matrices.solve_linear does.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.mechanics.program.tape import Tape
+
+BLOCK = 6  # the adjugate's minors grow as 2^n: a larger coupled block is refused (never met yet)
+
+
+def adjugate(tape: Tape, A: list[list]) -> tuple[list[list], sp.Expr]:
+    """(adj A, 1/det A) as program values, by cofactors of memoised minors."""
+    n = len(A)
+    if n == 1:
+        return [[sp.S.One]], tape.let(1 / A[0][0])
+    minors: dict[tuple, sp.Expr] = {}
+
+    def minor(rows: tuple, cols: tuple) -> sp.Expr:
+        """det of A[rows][cols], expanded along its first row."""
+        if len(rows) == 1:
+            return A[rows[0]][cols[0]]
+        key = (rows, cols)
+        if key not in minors:
+            terms = [(-1) ** j * A[rows[0]][c] * minor(rows[1:], cols[:j] + cols[j + 1:])
+                     for j, c in enumerate(cols) if A[rows[0]][c] != 0]
+            minors[key] = tape.let(sp.Add(*terms))
+        return minors[key]
+
+    every = tuple(range(n))
+    cofactor = [[(-1) ** (i + j) * minor(every[:i] + every[i + 1:], every[:j] + every[j + 1:])
+                 for j in range(n)] for i in range(n)]
+    det = tape.let(sp.Add(*(A[0][j] * cofactor[0][j] for j in range(n))))
+    return [[cofactor[j][i] for j in range(n)] for i in range(n)], tape.let(1 / det)
+
+
+def plan(A: list[list]) -> tuple[list[tuple[int, int]], list[int], list[int]]:
+    """The pivots (row, column) in the order they are solved, and the rows and columns left for the block."""
+    rows, cols, order = list(range(len(A))), list(range(len(A))), []
+    while rows:
+        hit = next(((i, live[0]) for i in rows if len(live := [j for j in cols if A[i][j] != 0]) == 1), None)
+        if hit is None:
+            break
+        order.append(hit)
+        rows.remove(hit[0])
+        cols.remove(hit[1])
+    return order, rows, cols
+
+
+def too_large(A: list[list]) -> bool:
+    """Whether the block left after the pivots is larger than the adjugate takes."""
+    return len(plan(A)[1]) > BLOCK
+
+
+class Solver:
+    """x = A⁻¹ b for a fixed A (program values, structural zeros exact) and several b.
+
+    Built once per A: a plan of pivots (row, column, 1/pivot) and one
+    adjugate block for the rest. A builder object: it writes the plan's
+    values on the tape once, then each solve writes only its own.
+    """
+
+    def __init__(self, tape: Tape, A: list[list]) -> None:
+        self.tape, self.A = tape, A
+        order, self.rows, self.cols = plan(A)
+        self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
+        block = [[A[i][j] for j in self.cols] for i in self.rows]
+        self.block = adjugate(tape, block) if self.rows else None
+
+    def solve(self, b: list) -> list[sp.Expr]:
+        tape, A = self.tape, self.A
+        x: dict[int, sp.Expr] = {}
+        for i, j, inverse in self.pivots:
+            rest = b[i] - sp.Add(*(A[i][k] * x[k] for k in x))
+            x[j] = tape.let(tape.let(rest) * inverse)
+        if self.block is not None:
+            adj, inverse = self.block
+            rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in self.rows]
+            for a, j in enumerate(self.cols):
+                x[j] = tape.let(inverse * tape.let(sp.Add(*(adj[a][t] * rest[t] for t in range(len(rest))))))
+        return [x[j] for j in range(len(A))]
+

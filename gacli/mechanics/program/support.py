@@ -1,0 +1,102 @@
+"""Which systems the program builder takes, and why not the others.
+
+The builder works from the frame model (gacli.frame_model) of a file that
+rolls its bodies on N's ground plane: frames turned by angles linear in the
+coordinates, points linked in frames, rigid bodies with frames, rolling
+wheels (axle along a frame axis) and spheres, forces and torques, a
+``potential`` and a ``work`` form over the coordinates. :func:`static_reason`
+says what rules a file out before any building; the build itself can still
+refuse (:class:`Unsupported`), e.g. when the constraint rows leave a block
+larger than the adjugate solve takes.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.algebra import symbols as S
+from gacli.frame_model import FrameModel, FrameVector
+from gacli.model import System
+
+
+class Unsupported(Exception):
+    """Raised inside the builder for what it does not take; caught by build_program, never escapes."""
+
+
+def static_reason(system: System) -> str | None:
+    """Why the builder does not take ``system`` (one sentence), or None when nothing rules it out yet."""
+    model = system.frames
+    if model is None:
+        return "the file is written without frames, points or rolling (format 1)"
+    for check in (_features, _frames, _bodies, _rolling, _loads):
+        reason = check(system, model)
+        if reason:
+            return reason
+    return None
+
+
+def _features(system: System, model: FrameModel) -> str | None:
+    if system.quasi_coordinates:
+        return "quasi-coordinates are not supported"
+    if system.functions:
+        return "functions of time are not supported"
+    if any(not c.derived for c in system.constraints):
+        return "constraints other than rolling contact (equations, forms or knife edges) are not supported"
+    if model.knife_edges:
+        return "knife edges are not supported"
+    if system.potential.has(S.T) or (system.work is not None and (system.work.dt != 0 or _timed(system.work))):
+        return "a potential or work that depends on time is not supported"
+    return None
+
+
+def _timed(work) -> bool:
+    return any(c.has(S.T) for _, c in work.coefficients)
+
+
+def _frames(system: System, model: FrameModel) -> str | None:
+    if model.origins:
+        return f"frame origins are not supported (frame '{model.origins[0][0]}' has one)"
+    coordinates = [S.value(c.name) for c in system.coordinates]
+    for edge in model.edges:
+        if edge.angle.has(S.T):
+            return f"the angle of frame '{edge.name}' depends on time"
+        if any(sp.diff(edge.angle, q).free_symbols & set(coordinates) for q in coordinates if edge.angle.has(q)):
+            return f"the angle of frame '{edge.name}' is not linear in the coordinates"
+    for link in model.points:
+        if any(c.has(S.T) for c in link.components):
+            return f"the position of point '{link.name}' depends on time"
+    return None
+
+
+def _bodies(system: System, model: FrameModel) -> str | None:
+    for body in model.bodies:
+        if body.inertia is not None and body.frame is None:
+            return f"the rigid body '{body.name}' has format-1 rotation forms, not a frame"
+    return None
+
+
+def _rolling(system: System, model: FrameModel) -> str | None:
+    frames = {b.name: b.frame for b in model.bodies}
+    for contact in model.rolling:
+        if contact.on is not None:
+            return f"rolling on the plane of frame '{contact.on}' (not N's) is not supported"
+        if contact.axle is not None and sum(1 for c in contact.axle if c != 0) != 1:
+            return f"the axle of '{contact.body}' is not along one of its frame's axes"
+        if not _in_own_axes(contact.centre, frames[contact.body]):
+            return f"the centre of '{contact.body}' is not given in its own axes"
+    return None
+
+
+def _in_own_axes(vector: FrameVector, frame: str | None) -> bool:
+    return vector.origin is None and all(f == frame for f, _ in vector.terms)
+
+
+def _loads(system: System, model: FrameModel) -> str | None:
+    for load in model.loads:
+        if load.vector.origin is not None:
+            return "a load written with 'from' or as a point's name is not supported"
+        if any(f is None for f, _ in load.vector.terms):
+            return f"a torque on '{load.body}' is given in body axes of format-1 forms"
+        if any(c.has(S.T) for _, v in load.vector.terms for c in v):
+            return "a load that depends on time is not supported"
+    return None

@@ -1,0 +1,102 @@
+"""The tape a program is written on: scalar assignments, each named once, in evaluation order.
+
+:class:`Tape` is a builder object, not a frozen record, because value
+numbering needs one memo over the whole build: an expression already on the
+tape (or its negative) is never written twice, whichever step asks for it.
+Each assignment carries the stage it was written in (for reports). The tape
+also knows the value of every assignment at a few seeded generic points, so
+that the builder can tell an entry that vanishes identically (a row entry,
+a moment that cancels), as the loader does for its rolling rows
+(gacli.numeric.zero.vanishes: three generic points, a value below 1e-12
+taken as zero); the tolerance here is relative to the terms' size.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Iterable
+
+import sympy as sp
+
+from gacli.numeric import Program as Evaluator
+from gacli.numeric.samples import SAMPLE_INTERVAL
+
+# Assigned symbols are named so that no declared name can be one: the grammar's names are
+# identifiers, and brackets keep these apart as they keep the differentials d[x] apart.
+NAME = "_p[{}]"
+_SEEDS = (1, 2, 3)
+_TOLERANCE = 1e-11
+
+
+def _trivial(e: sp.Expr) -> bool:
+    """An atom, or minus an atom: never worth a name."""
+    return e.is_Atom or (e.is_Mul and len(e.args) == 2 and e.args[0] is sp.S.NegativeOne and e.args[1].is_Atom)
+
+
+class Tape:
+    """Assignments (symbol, expression, stage) with value numbering and numeric values at generic points."""
+
+    def __init__(self) -> None:
+        self.assignments: list[tuple[sp.Symbol, sp.Expr, str]] = []
+        self.stage = ""
+        self._memo: dict[sp.Expr, sp.Symbol] = {}
+        self._points: list[dict[sp.Symbol, complex]] = [{} for _ in _SEEDS]
+        self._draws = [random.Random(seed) for seed in _SEEDS]
+        self._evaluated = 0
+
+    def let(self, e) -> sp.Expr:
+        """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are."""
+        e = sp.sympify(e)
+        if _trivial(e):
+            return e
+        hit = self._memo.get(e)
+        if hit is not None:
+            return hit
+        hit = self._memo.get(-e)
+        if hit is not None:
+            return -hit
+        name = sp.Symbol(NAME.format(len(self.assignments)), real=True)
+        self.assignments.append((name, e, self.stage))
+        self._memo[e] = name
+        return name
+
+    def vec(self, v: Iterable) -> tuple:
+        return tuple(self.let(c) for c in v)
+
+    def values(self, e: sp.Expr) -> list[complex]:
+        """``e`` (over state symbols and assigned ones) at each generic point."""
+        return [v[0] for v in self._values([sp.sympify(e)])]
+
+    def vanishes(self, e) -> bool:
+        """``e`` is zero at every generic point (relative to the size of its terms): taken as identically zero."""
+        e = sp.sympify(e)
+        if e == 0:
+            return True
+        terms = list(sp.Add.make_args(e))
+        for values in self._values([e, *terms]):
+            if abs(values[0]) > _TOLERANCE * max([1.0] + [abs(v) for v in values[1:]]):
+                return False
+        return True
+
+    def _values(self, exprs: list[sp.Expr]) -> list[list[complex]]:
+        """The expressions' values at each point (one compiled evaluation per point)."""
+        self._catch_up()
+        evaluate = Evaluator(exprs)
+        return [evaluate(self._with(point, draw, evaluate.symbols)) for point, draw in zip(self._points, self._draws)]
+
+    def _catch_up(self) -> None:
+        """Evaluate the assignments written since the last question, in order, at every point."""
+        for name, e, _ in self.assignments[self._evaluated:]:
+            evaluate = Evaluator([e])
+            for point, draw in zip(self._points, self._draws):
+                point[name] = evaluate(self._with(point, draw, evaluate.symbols))[0]
+        self._evaluated = len(self.assignments)
+
+    @staticmethod
+    def _with(point: dict, draw: random.Random, symbols: tuple) -> dict:
+        """The point, with a generic value drawn for each state symbol seen for the first time
+        (``symbols`` comes sorted by name, so the draws do not depend on hashing)."""
+        for s in symbols:
+            if s not in point:
+                point[s] = complex(draw.uniform(*SAMPLE_INTERVAL))
+        return point
