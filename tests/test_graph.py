@@ -62,3 +62,17 @@ def test_only_expressions_are_named():
     for name, value in reversed(replacements):
         rebuilt = [e.xreplace({name: value}) for e in rebuilt]
     assert rebuilt == exprs
+
+
+def test_a_name_whose_uses_cancel_is_not_kept():
+    # An unevaluated sum (a straight-line program inlined) is evaluated when rebuilt; a shared
+    # term that cancels there must leave no dead name behind (the C compiler rejects one).
+    import sympy as sp
+
+    from gacli.algebra.graph import shared_subexpressions
+
+    a, b, c, d = sp.symbols("a b c d")
+    t = sp.Mul(c, a * b + 1)
+    e = sp.Add(t, sp.Mul(-1, t, evaluate=False), d, evaluate=False)
+    replacements, reduced = shared_subexpressions([e], sp.numbered_symbols("_c"))
+    assert replacements == [] and reduced == [d]

@@ -91,7 +91,21 @@ def shared_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol
             replacements.append((name, new))
             new = name
         rebuilt[node] = new
-    return replacements, [rebuilt[e] for e in exprs]
+    reduced = [rebuilt[e] for e in exprs]
+    return _live(replacements, reduced), reduced
+
+
+def _live(replacements: list[tuple[sp.Symbol, sp.Expr]], reduced: list[sp.Expr]) -> list[tuple[sp.Symbol, sp.Expr]]:
+    """The replacements the results need. A sum built unevaluated (a straight-line program
+    inlined) is evaluated when rebuilt, and terms that cancel there (a moment that is zero)
+    take their shared subexpressions' uses with them: such a name would be dead code."""
+    needed = free_symbols(reduced)
+    kept = []
+    for name, value in reversed(replacements):
+        if name in needed:
+            kept.append((name, value))
+            needed |= free_symbols([value])
+    return kept[::-1]
 
 
 def _trivial(expr: sp.Basic) -> bool:
@@ -144,3 +158,20 @@ def expanded_terms(expr: sp.Expr, limit: int) -> int:
                 break
         return total
     return 1
+
+
+def operations(exprs: Iterable[sp.Basic]) -> int:
+    """Arithmetic operations of the expressions with every repeated subexpression computed once.
+
+    One walk over the distinct subexpressions, never over trees: a sum or
+    product of n arguments is n − 1 operations, a power or a function one. It
+    is close to ``count_ops`` after :func:`shared_subexpressions` (which walks
+    every piece as a tree), and cheap enough to choose between two routes.
+    """
+    total = 0
+    for node in postorder(exprs):
+        if node.is_Add or node.is_Mul:
+            total += len(node.args) - 1
+        elif node.is_Pow or isinstance(node, sp.Function):
+            total += 1
+    return total
