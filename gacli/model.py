@@ -165,6 +165,9 @@ class System:
     # The frames, points, bodies, rolling and loads as declared (gacli.frame_model), when the
     # file uses frames; None for a format-1 file. Read by gacli.mechanics.program.
     frames: FrameModel | None = None
+    # False when loaded without the rolling contacts' rows in N, for the straight-line
+    # program alone (gacli.loader.loading.load_source): the chapter's steps refuse it.
+    rolling_rows: bool = True
 
     @property
     def rate_names(self) -> tuple[str, ...]:

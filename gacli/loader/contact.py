@@ -83,6 +83,8 @@ class RollingContacts:
         if axle is False or centre is None:
             return []
         self.parsed[id(decl)] = radius
+        if not self.rolling_rows:
+            return []
         rows = self._contact_rows(body, frame, surface, plane, centre, radius, axle)
         names = _WHEEL_ROWS if axle is not None else _axis_names(surface, plane)
         return [Constraint(self._row_form(rows[i, :]), self.where_of(decl.node),
@@ -137,6 +139,8 @@ class RollingContacts:
         if problem := axle_problem(local, dcm, self.known):  # else the contact divides by zero: rows lost
             self.error(decl.axle.node, f"{where}.axle", problem)
             return False
+        if not self.rolling_rows:
+            return local  # checked; the unit axle along N's axes is for the rows alone
         axle = dcm * (local / sp.sqrt(local.dot(local)))
         return axle if plane is None else axle.applyfunc(trig.reduce)
 

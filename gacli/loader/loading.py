@@ -54,11 +54,15 @@ def loads(text: str, path: str = "<string>") -> System:
     return load_source(parse_source(text.encode("utf-8"), path))
 
 
-def load_source(source: SourceFile) -> System:
+def load_source(source: SourceFile, *, rolling_rows: bool = True) -> System:
+    """The System of a source. ``rolling_rows=False`` leaves out the rolling rows in N, 80 %
+    of a bicycle's loading: the straight-line program (gacli.mechanics.program) forms its
+    own from the frame model, and every declaration is still read and checked. Such a
+    System has ``rolling_rows`` False, and the chapter's steps refuse it."""
     decl, diagnostics = read_declarations(source)
     if diagnostics or decl is None:
         raise SystemFileError(diagnostics)
-    builder = _Builder(decl)
+    builder = _Builder(decl, rolling_rows=rolling_rows)
     system = builder.system()
     if builder.diagnostics:
         raise SystemFileError(sorted(builder.diagnostics, key=lambda d: d.location))
@@ -72,6 +76,7 @@ class _Builder(Forms, Geometry, RollingContacts):
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
     # Parsed pieces of frames, vectors and rolling contacts by id of their declaration, for the frame model.
     parsed: dict[int, object] = field(default_factory=dict)
+    rolling_rows: bool = True  # form the rolling contacts' rows in N (see load_source)
 
     @property
     def source(self) -> SourceFile:
@@ -138,7 +143,7 @@ class _Builder(Forms, Geometry, RollingContacts):
             independent_location=self.where_of(self.decl.independent_node) if self.decl.independent_node else Location(self.source.path, 1, 1),
             bodies=bodies, forces=forces, torques=torques, work=work,
             potential=potential if potential is not None else sp.S.Zero,
-            uses_frames=uses_frames, frames=frames,
+            uses_frames=uses_frames, frames=frames, rolling_rows=self.rolling_rows or not self.decl.rolling,
         )
 
     def _check_names(self) -> None:

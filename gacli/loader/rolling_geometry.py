@@ -13,6 +13,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
+from gacli.loader.frames import rotate
 from gacli.numeric import UndefinedValue, evaluate, sample_points
 
 
@@ -37,7 +38,9 @@ def axle_problem(local: sp.Matrix, dcm: sp.Matrix, known: Mapping[sp.Symbol, flo
     """A zero axle, or one along the plane's normal at every configuration tried."""
     if _vanishes_everywhere(local.dot(local), known):
         return "the axle is the zero vector: it gives no direction"
-    world = dcm * local
+    # As lists, not a Matrix product: the product's entries are only evaluated here, and a Matrix
+    # product of a fork's direction cosines was a tenth of a bicycle's loading.
+    world = rotate(dcm.tolist(), list(local))
     if _vanishes_everywhere(world[0] ** 2 + world[1] ** 2, known):
         return ("the axle is along the plane's normal: the wheel lies flat on the plane "
                 "and has no single contact point")
