@@ -15,7 +15,7 @@ from typing import Annotated, Optional
 import typer
 
 from gacli.version import __version__
-from gacli.cli_help import Group, choice, derive_usage, example, formats
+from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats
 
 app = typer.Typer(
     name="gacli",
@@ -31,6 +31,7 @@ app = typer.Typer(
 # Read from gacli.emit.EMITTERS (a light module: emitters load on first use),
 # so a new emitter is a new --format with no change here.
 FORMATS = formats()
+CODE_FORMATS = code_formats()
 # gacli.simulate.METHODS, kept as a literal so that --help does not import SciPy;
 # a test checks the two agree.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -83,10 +84,15 @@ def _budget(path: Path, seconds: float):
         yield state
 
 
-def _derive(path: Path, state):
-    """Read, load and derive within the budget, telling it (and the spinner) each step."""
+def _derive(path: Path, state, for_code: bool = False):
+    """Read, load and derive within the budget, telling it (and the spinner) each step.
+
+    ``for_code``: a system whose code is its straight-line program alone (gacli.mechanics.code)
+    is derived by that, loaded without the rolling rows only the closed forms need.
+    """
     from gacli.display import console
     from gacli.budget import STEP_LOAD, STEP_READ
+    from gacli.mechanics.code import derive_for_code
     from gacli.mechanics.equations import derive
     from gacli.loader.loading import load_source
     from gacli.read.source import read_source
@@ -94,6 +100,8 @@ def _derive(path: Path, state):
     state(STEP_READ)
     source = read_source(path)
     state(STEP_LOAD)
+    if for_code and (program := derive_for_code(load_source(source, rolling_rows=False))) is not None:
+        return program
     system = load_source(source)
     with console.progress(f"deriving {path.name}") as spinner:
         def step(name: str) -> None:
@@ -138,7 +146,7 @@ def derive(
     derive_usage(format, output, steps, reactions)
     with _boundary():
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state)
+            derivation = _derive(file, state, for_code=format in CODE_FORMATS and not reactions)
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)

@@ -84,6 +84,11 @@ def formats() -> tuple[str, ...]:
     return ("text", *sorted(EMITTERS))
 
 
+def code_formats() -> tuple[str, ...]:
+    """The formats that are generated code alone (they read ``Derivation.code``, gacli.mechanics.code)."""
+    return tuple(f for f in formats() if f not in ("text", "latex"))
+
+
 def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
     """Option combinations derive refuses, found before any work is done."""
     if format == "text" and output is not None:

@@ -21,7 +21,7 @@ from conftest import SYSTEMS
 from gacli.emit.jax import emit_jax
 from test_emit_octave import case
 from test_emit_python import EXTRA, write_python
-from test_generated_numeric import close, derivation, random_states
+from test_generated_numeric import RTOL, close, derivation, random_states
 
 try:
     import jax
@@ -63,7 +63,10 @@ def test_jit_and_vmap_agree_with_the_python_module(name, tmp_path):
     batched = jax.vmap(module.rhs, in_axes=(None, 0, None, None))(t, xs, jnp.asarray(p), jnp.asarray(r))
     assert batched.shape == (BATCH, len(d.state))
     for i in range(BATCH):
-        assert close(batched[i], reference.rhs(t, xs[i], p, r)), (i, "vmap")
+        # A solve's forward error grows with cond(M), as in test_generated_numeric: a random
+        # bicycle state can have cond(M) = 6e4, where two exact codes differ by 2e-12.
+        cond = np.linalg.cond(reference.mass_matrix(t, xs[i], p, r))
+        assert close(batched[i], reference.rhs(t, xs[i], p, r), RTOL * max(1.0, cond / 100)), (i, "vmap")
 
 
 def test_vmap_over_parameters(tmp_path):

@@ -33,7 +33,7 @@ FIXTURES = sorted([*ROOT.glob("systems/*.yaml"), *ROOT.glob("tests/frames/*.yaml
 SUPPORTED = {
     "chaplygin_ball", "differential_drive", "rolling_disk", "routh_sphere", "whipple_bicycle",
     "car", "self_balancing", "spherical_robot", "thick_coin", "unbalanced_disk",
-    "ackermann_car", "diff_drive_castor", "robot_trailer", "snakeboard", "tricycle_front_drive",
+    "ackermann_car", "diff_drive_castor", "hoop_bead", "robot_trailer", "snakeboard", "tricycle_front_drive",
 }
 TOLERANCE = 1e-9
 

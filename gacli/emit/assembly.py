@@ -85,7 +85,7 @@ def assemble(derivation: Derivation, names: dict, printer_class, parts: Sequence
     """
     keyed = [(part, equations(derivation, part)) for part in parts]
     flat = [(name, expr) for _, group in keyed for _, name, expr in group]
-    block, printer = print_block(printer_class, names, flat, prefix=prefix)
+    block, printer = print_block(printer_class, names, flat, prefix=prefix, graphs=derivation.code.shared)
     slots, start = {}, 0
     for part, group in keyed:
         codes = block.results[start:start + len(group)]
@@ -95,11 +95,16 @@ def assemble(derivation: Derivation, names: dict, printer_class, parts: Sequence
 
 
 def equations(derivation: Derivation, part: str) -> list[tuple[object, str, sp.Expr]]:
-    """``(slot, name, expression)`` of one part; the name is for error messages."""
+    """``(slot, name, expression)`` of one part; the name is for error messages.
+
+    The expressions are :attr:`Derivation.code`'s: the closed forms, or the
+    straight-line program's where that costs fewer operations (gacli.mechanics.code).
+    """
+    code = derivation.code
     if part == "qdot":
-        return [(i, f"dot({name})", expr) for i, (name, expr) in enumerate(derivation.kinematic_equations)]
+        return [(i, f"dot({name})", expr) for i, (name, expr) in enumerate(code.kinematic_equations)]
     if part == "F":
-        return [(s, f"F[{s}]", derivation.forcing[s]) for s in range(derivation.k)]
+        return [(s, f"F[{s}]", code.forcing[s]) for s in range(derivation.k)]
     return [((i, j), f"M[{i}, {j}]", expr) for (i, j), expr in mass_matrix_entries(derivation, part == "M_lower")]
 
 
@@ -109,8 +114,7 @@ def mass_matrix_entries(derivation: Derivation, lower: bool = False) -> list[tup
     Read from the sparse form of M, never entry by entry: linear in the
     number of nonzero entries, not in k².
     """
-    entries = sorted(derivation.mass_matrix.todok().items())
-    return [((i, j), expr) for (i, j), expr in entries if not (lower and j > i) and expr != 0]
+    return [((i, j), expr) for (i, j), expr in derivation.code.mass_matrix if not (lower and j > i)]
 
 
 # -- the constraint forces ------------------------------------------------------

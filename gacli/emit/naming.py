@@ -235,8 +235,8 @@ def _used_symbols(derivation: Derivation) -> set[sp.Symbol]:
     from gacli.algebra.graph import free_symbols
 
     # M's nonzero entries only: a wide system's M is k² entries, nearly all zero.
-    exprs = [*derivation.mass_matrix.todok().values(), *derivation.forcing, *(e for _, e in derivation.kinematic_equations)]
-    return free_symbols(exprs)
+    code = derivation.code
+    return free_symbols([*(e for _, e in code.mass_matrix), *code.forcing, *(e for _, e in code.kinematic_equations)])
 
 
 def _r_slots(derivation: Derivation, used: set[sp.Symbol]) -> list[tuple[str, sp.Symbol]]:
@@ -357,8 +357,9 @@ def _name_entries(groups: Mapping[str, list], prefix: str, reserved: ReservedNam
 
 def mass_arguments(derivation: Derivation) -> str:
     """How a module's docstring writes M: M(q, u, t) when a constraint nonlinear in the rates puts u in it."""
-    speeds = set(derivation.speeds)
-    moving = any(e.free_symbols & speeds for e in derivation.mass_matrix.todok().values())
+    from gacli.algebra.graph import free_symbols
+
+    moving = free_symbols([e for _, e in derivation.code.mass_matrix]) & set(derivation.speeds)
     return "M(q, u, t)" if moving else "M(q, t)"
 
 

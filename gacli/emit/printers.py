@@ -227,16 +227,19 @@ CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
-                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX) -> tuple[Block, object]:
+                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX,
+                graphs: bool = False) -> tuple[Block, object]:
     """CSE over the equations, in their order, then print; returns the block and the printer.
 
     The printer is returned so that callers can read what the code needs
     (``imports()``, ``includes()``). Temporaries are named ``<prefix>0``,
     ``<prefix>1`` ...: the prefix must be one that no name in ``names`` has.
+    ``graphs``: the expressions share their subexpressions by construction (a
+    straight-line program inlined), and are walked only as graphs.
     """
     exprs = [as_expr(expr) for _, expr in equations]
     names_of_temporaries = sp.numbered_symbols(prefix)
-    if not any(is_large(e) for e in exprs):
+    if not graphs and not any(is_large(e) for e in exprs):
         replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
     else:
         # SymPy's canonical ordering counts tree nodes; the bicycle's trees are millions.

@@ -29,6 +29,7 @@ from gacli.mechanics.forces import generalized_forces
 from gacli.mechanics.gibbs import gibbs_function
 from gacli.algebra.matrices import product
 from gacli.mechanics.axes import turned
+from gacli.mechanics.code import CodeEquations, chosen, from_closed, program_for
 from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
 from gacli.mechanics.rates import Rates, solve_rates
 from gacli.algebra import trig
@@ -60,6 +61,17 @@ class Derivation:
         s, k = self.system, self.k
         return (f"<Derivation of {s.name!r}: k = {k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
                 f"speeds {', '.join(str(u) for u in self.speeds)}; M {k}x{k}, F {k}x1>")
+
+    @functools.cached_property
+    def code(self) -> CodeEquations:
+        """q̇, M and F as generated code computes them (:mod:`gacli.mechanics.code`): these closed
+        forms, or the straight-line program of a system written with frames where it costs fewer
+        operations."""
+        program = program_for(self.system)
+        if program is not None and program.independent != self.independent:
+            program = None  # M and F in other speeds: not the same equations
+        names = tuple(c.name for c in self.system.coordinates)
+        return chosen(program, names, lambda: from_closed(self.kinematic_equations, self.mass_matrix, self.forcing))
 
     @functools.cached_property
     def gibbs(self) -> sp.Expr:
@@ -149,6 +161,9 @@ def derive(system: System, *, progress: Callable[[str], None] | None = None) -> 
 
 
 def _derive(system: System, step: Callable[[str], None]) -> Derivation:
+    if not system.rolling_rows:
+        raise DerivationError(f"{system.path}: loaded without its rolling rows, for generated code alone; "
+                              "load it again with rolling_rows=True to derive it")
     step("rates in terms of the independent rates (14.7)")
     rates = solve_rates(system)
     step("velocities and accelerations (14.14)")
@@ -340,3 +355,4 @@ def _reduced(entry: sp.Expr, groups: dict, cancel: bool = False) -> sp.Expr:
         if powers is None or trig.monomial_may_square(powers):
             return trig.reduce(entry)
     return entry
+

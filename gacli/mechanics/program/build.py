@@ -10,6 +10,8 @@ virtual work (eq. 14.13), and the potential's and the work form's.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import sympy as sp
 
@@ -72,7 +74,7 @@ def program_of(system: System) -> Program:
     solver, passes = _rates(motion, kept, independent, dependent)
     rates = _kinematics(motion, names, at_root, passes.actual)
     passes = _gamma(motion, kept, solver, dependent, passes)
-    return _dynamics(system, motion, passes, rates, at_root)
+    return replace(_dynamics(system, motion, passes, rates, at_root), independent=tuple(independent))
 
 
 def _rates(motion: Motion, kept: R.Rows, independent, dependent) -> tuple[Solver, Passes]:

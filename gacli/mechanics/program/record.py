@@ -26,6 +26,7 @@ class Program:
     mass_matrix: tuple[sp.Expr, ...]  # k × k entries, row-major (symmetric)
     forcing: tuple[sp.Expr, ...]  # k entries
     stages: tuple[tuple[str, int], ...]  # (stage, number of assignments written in it), in order
+    independent: tuple[str, ...] = ()  # the speeds u of M u̇ = F, in their order
 
     @property
     def k(self) -> int:

@@ -46,13 +46,15 @@ class Tape:
 
     def let(self, e) -> sp.Expr:
         """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are."""
-        e = sp.sympify(e)
+        e = e if isinstance(e, sp.Basic) else sp.sympify(e)
         if _trivial(e):
             return e
         hit = self._memo.get(e)
         if hit is not None:
             return hit
-        hit = self._memo.get(-e)
+        # −e of a sum is a new sum of every term negated: an eighth of a bicycle's build, and
+        # no sum of the repository's systems comes back negated; a product's −e is cheap.
+        hit = None if e.is_Add else self._memo.get(-e)
         if hit is not None:
             return -hit
         name = sp.Symbol(NAME.format(len(self.assignments)), real=True)

@@ -1,0 +1,151 @@
+"""q̇, M and F as generated code computes them: the closed forms, or the straight-line program.
+
+The chapter's route (:mod:`gacli.mechanics.equations`) gives M and F in
+closed form, which text and LaTeX print and the code emitters can share
+subexpressions of. For a system written with frames there is a second
+route, :mod:`gacli.mechanics.program`: the same q̇, M and F as a
+straight-line program over the frame tree, with the dependent rates and
+accelerations solved as numbers. Which one generated code uses is decided
+here, once, by the operations each costs after common subexpressions are
+shared, so that the command line and ``gacli.emit(gacli.derive(...))``
+always write the same code:
+
+- a program of at least :data:`PROGRAM_ALONE` operations is taken without
+  forming the closed forms at all (a bicycle's are millions of nodes as
+  trees, 4,279 operations after sharing, against the program's 1,053);
+- otherwise the one of fewer operations (a rolling disk's closed forms: 66
+  against 92; a robot towing a trailer's program: 275 against 1,395).
+
+The program's expressions are graphs sharing their subexpressions, built
+unevaluated (:func:`gacli.mechanics.program.inline`): they must be walked
+with :mod:`gacli.algebra.graph`, never as trees.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import sympy as sp
+
+from gacli.algebra import symbols as S
+from gacli.algebra.graph import operations
+from gacli.mechanics.program import Program, build_program, inline
+from gacli.model import System
+
+# Operations of a program past which the closed forms are not formed for code: no
+# system of the repository whose program is this large has shorter closed forms, and
+# forming them is what costs a bicycle's derivation its time.
+PROGRAM_ALONE = 800
+
+
+@dataclass(frozen=True)
+class CodeEquations:
+    """What a generated rhs evaluates, and which route it comes from ("closed" or "program")."""
+
+    route: str
+    kinematic_equations: tuple[tuple[str, sp.Expr], ...]  # (coordinate, q̇), declaration order
+    mass_matrix: tuple[tuple[tuple[int, int], sp.Expr], ...]  # the nonzero entries, row-major
+    forcing: tuple[sp.Expr, ...]
+    operations: int  # with every repeated subexpression computed once (gacli.algebra.graph.operations)
+
+    @property
+    def shared(self) -> bool:
+        """Whether the expressions are graphs that only :func:`shared_subexpressions` may walk."""
+        return self.route == "program"
+
+
+def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
+    rates, M, F = inline(program)
+    k = program.k
+    entries = tuple(((i, j), M[i * k + j]) for i in range(k) for j in range(k) if M[i * k + j] != 0)
+    return CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), program_operations(program))
+
+
+def from_closed(kinematic, mass_matrix: sp.MatrixBase, forcing) -> CodeEquations:
+    entries = tuple(sorted((key, e) for key, e in mass_matrix.todok().items() if e != 0))
+    exprs = [*(e for _, e in kinematic), *(e for _, e in entries), *forcing]
+    return CodeEquations("closed", tuple(kinematic), entries, tuple(forcing), operations(exprs))
+
+
+def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
+    """The route generated code takes (see the module); ``closed()`` forms the closed forms' record."""
+    if program is None:
+        return closed()
+    if program_operations(program) >= PROGRAM_ALONE:
+        return from_program(program, names)
+    candidates = (closed(), from_program(program, names))
+    return min(candidates, key=lambda c: c.operations)  # the closed forms when equal
+
+
+def program_operations(program: Program) -> int:
+    """The program's operations: its assignments and outputs, each repeated piece once."""
+    outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
+    return operations([*(e for _, e in program.assignments), *outputs])
+
+
+@dataclass(frozen=True)
+class ProgramDerivation:
+    """Equations for generated code alone, by the straight-line program.
+
+    What the code emitters read of a :class:`Derivation`: the system, the
+    independent rates and the state, and :attr:`code`. The chapter's steps
+    (β, the motions, G, Q, closed M and F) are not formed; text, LaTeX,
+    ``--steps``, ``--reactions`` and ``verify`` take
+    :func:`gacli.mechanics.equations.derive`.
+    """
+
+    system: System
+    program: Program
+
+    def __repr__(self) -> str:
+        return f"<ProgramDerivation of {self.system.name!r}: k = {self.k}, {self.code.operations:,} operations>"
+
+    @property
+    def independent(self) -> tuple[str, ...]:
+        return self.program.independent
+
+    @property
+    def k(self) -> int:
+        return len(self.independent)
+
+    @property
+    def speeds(self) -> tuple[sp.Symbol, ...]:
+        return tuple(S.rate(n) for n in self.independent)
+
+    @property
+    def speed_rates(self) -> tuple[sp.Symbol, ...]:
+        return tuple(S.rate(n, 2) for n in self.independent)
+
+    @property
+    def coordinates(self) -> tuple[sp.Symbol, ...]:
+        return tuple(S.value(c.name) for c in self.system.coordinates)
+
+    @property
+    def state(self) -> tuple[sp.Symbol, ...]:
+        return self.coordinates + self.speeds
+
+    @functools.cached_property
+    def code(self) -> CodeEquations:
+        return from_program(self.program, tuple(c.name for c in self.system.coordinates))
+
+
+def derive_for_code(system: System) -> ProgramDerivation | None:
+    """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
+    would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
+    None otherwise, and the caller derives the closed forms as usual."""
+    program = program_for(system)
+    if program is None or program_operations(program) < PROGRAM_ALONE:
+        return None
+    return ProgramDerivation(system, program)
+
+
+def program_for(system: System) -> Program | None:
+    """The system's program; None without a frame model, outside what the builder takes, or
+    when it fails: the chapter's route, hardened against every file, then says what is wrong."""
+    if system.frames is None:
+        return None
+    try:
+        return build_program(system)
+    except Exception:  # noqa: BLE001 - see above
+        return None

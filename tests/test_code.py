@@ -1,0 +1,114 @@
+"""Which equations generated code computes (gacli.mechanics.code), and that they are the same equations.
+
+A system written with frames has two routes to q̇, M and F: the closed forms
+of the chapter's steps and the straight-line program (gacli.mechanics.program).
+Generated code takes the one of fewer operations; the command line takes the
+program alone, without the closed forms, when it is large. Whatever the route,
+the generated module must agree with the closed forms at random states, and the
+command line must write what ``gacli.emit(gacli.derive(...))`` writes.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import gacli
+from gacli.cli import app
+from gacli.errors import DerivationError
+from gacli.loader.loading import load, load_source, loads
+from gacli.mechanics.code import PROGRAM_ALONE, derive_for_code, from_closed, program_operations
+from gacli.mechanics.equations import derive
+from gacli.mechanics.program import build_program
+from gacli.read.source import read_source
+from test_generated_numeric import close, random_states, rhs_agrees, sympy_values
+from test_emit_c import COMPILERS, compile_c
+from test_emit_python import write_python
+
+TESTS = Path(__file__).resolve().parent
+ROOT = TESTS.parent
+BICYCLE = ROOT / "systems" / "whipple_bicycle.yaml"
+ROBOTS = [TESTS / "twins" / "robot_trailer.yaml", TESTS / "twins" / "tricycle_front_drive.yaml",
+          TESTS / "frames" / "car.yaml"]
+
+
+@pytest.mark.parametrize("path", [*ROBOTS, ROOT / "systems" / "rolling_disk.yaml", BICYCLE], ids=lambda p: p.stem)
+def test_generated_code_takes_the_route_of_fewer_operations(path):
+    d = derive(load(path))
+    program = build_program(d.system)
+    closed = from_closed(d.kinematic_equations, d.mass_matrix, d.forcing).operations
+    ops = program_operations(program)
+    expected = "program" if ops >= PROGRAM_ALONE or ops < closed else "closed"
+    assert d.code.route == expected, (ops, closed)
+
+
+@pytest.mark.parametrize("path", ROBOTS, ids=lambda p: p.stem)
+def test_the_programs_code_agrees_with_the_closed_forms(path, tmp_path):
+    # The vehicles take the program (a trailer's: 304 operations against 1,395): their generated
+    # module is checked against the chapter's closed forms, an independent derivation.
+    d = derive(load(path))
+    assert d.code.route == "program"
+    module = write_python(d, tmp_path)
+    for state in list(random_states(d, 7))[:5]:
+        M, F, xdot = sympy_values(d, *state)
+        assert close(module.mass_matrix(*state), M)
+        assert close(module.forcing(*state), F)
+        assert rhs_agrees(module.rhs(*state), M, F, xdot, len(d.coordinates))
+
+
+def test_the_command_line_writes_what_the_api_writes(tmp_path):
+    # The command line derives a bicycle by the program alone (no closed forms, no rolling rows in N);
+    # the API derives everything and chooses the same route, so the two files are the same.
+    out = tmp_path / "bicycle.py"
+    result = CliRunner().invoke(app, ["derive", str(BICYCLE), "--format", "python", "--output", str(out)])
+    assert result.exit_code == 0, result.output
+    (text,) = gacli.emit(derive(load(BICYCLE)), "python").values()
+    assert out.read_text(encoding="utf-8") == text
+
+
+def test_the_bicycle_is_derived_for_code_without_its_closed_forms():
+    system = load_source(read_source(BICYCLE), rolling_rows=False)
+    assert not system.rolling_rows and not any(c.derived for c in system.constraints)
+    d = derive_for_code(system)
+    assert d is not None and d.code.route == "program" and d.k == 3
+    with pytest.raises(DerivationError, match="without its rolling rows"):
+        derive(system)
+
+
+def test_a_small_system_is_not_derived_for_code_alone():
+    # A rolling disk's program (92 operations) is longer than its closed forms: the command line
+    # derives them as before.
+    system = load_source(read_source(ROOT / "systems" / "rolling_disk.yaml"), rolling_rows=False)
+    assert derive_for_code(system) is None
+
+
+def test_loading_without_rolling_rows_still_reads_every_declaration(tmp_path):
+    text = BICYCLE.read_text(encoding="utf-8").replace("axle: [0, 1, 0]", "axle: [0, 0, 0]", 1)
+    assert "axle: [0, 0, 0]" in text
+    path = tmp_path / "bicycle.yaml"
+    path.write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(app, ["derive", str(path), "--format", "c"])
+    assert result.exit_code != 0
+    assert "axle is the zero vector" in result.output and "bicycle.yaml:" in result.output
+    assert "Traceback" not in result.output
+
+
+def test_a_format1_file_has_no_program():
+    system = loads("gacli: 1\nname: fall\nparameters: [m, g]\ncoordinates: [z]\n"
+                   "bodies: {ball: {mass: m, position: [0, 0, z]}}\npotential: m*g*z\n")
+    assert system.frames is None and derive(system).code.route == "closed"
+
+
+PROGRAM_ROUTE = [p for p in sorted([*(TESTS / "frames").glob("*.yaml"), *(TESTS / "twins").glob("*.yaml")])
+                 if not p.stem.endswith("_format1")]
+
+
+@pytest.mark.parametrize("compiler", COMPILERS)
+@pytest.mark.parametrize("path", PROGRAM_ROUTE, ids=lambda p: p.stem)
+def test_the_code_of_every_frame_fixture_compiles_strictly(path, compiler, tmp_path):
+    # -Wall -Wextra -Werror -pedantic: no dead temporary, whichever route the code takes (a
+    # program's sums are inlined unevaluated, and terms that cancel when the CSE rebuilds them
+    # once left names nothing used).
+    compile_c(derive(load(path)), tmp_path, compiler)
