@@ -104,10 +104,35 @@ def _integrate(solve_ivp, problem: "_Problem", spec: SimulationSpec, progress):
         raise SimulationError([f"{message}; the state there: {where}"]) from None
     if solution.status < 0:
         reached = solution.t[-1] if len(solution.t) else 0.0
-        raise SimulationError([f"the integration stopped at t = {reached:.6g}: {solution.message}"])
+        message = f"the integration stopped at t = {reached:.6g}: {solution.message}"
+        if len(solution.t) and reached > 0 and (why := _singular(problem, reached, solution.y[:, -1])):
+            where = ", ".join(f"{n} = {short(v)}" for n, v in zip(problem.state, solution.y[:, -1]))
+            message += f" ({why}); the state there: {where}"
+        raise SimulationError([message])
     if progress is not None:
         progress(spec.t_end)
     return solution
+
+
+# M's condition number past which an integrator that gave up is said to have met a singular
+# configuration: its steps shrink as the accelerations grow without bound there.
+SINGULAR_CONDITION = 1e8
+
+
+def _singular(problem: "_Problem", t: float, x: np.ndarray) -> str:
+    """Why the integrator gave up, when the configuration it reached is singular; "" otherwise.
+
+    Near a bicycle lying flat its rolling constraints lose rank: M, solved for the dependent
+    rates numerically, grows ill-conditioned without ceasing to be positive definite."""
+    try:
+        M = np.asarray(problem.module.mass_matrix(t, x, problem.p, problem.r), dtype=float)
+        condition = np.linalg.cond(M)
+    except (ArithmeticError, ValueError, np.linalg.LinAlgError):
+        return "the motion has reached a configuration where the model is singular"
+    if not np.isfinite(condition) or condition > SINGULAR_CONDITION:
+        return (f"the motion has reached a configuration where the model is singular: "
+                f"M's condition number there is {short(condition)}")
+    return ""
 
 
 def _throttled(progress, t_end: float) -> Callable[[float], None]:
