@@ -210,7 +210,8 @@ def emitted_rhs_ops(calls, derivation) -> int | None:
 
     (The emitters also CSE M and F alone for ``mass_matrix`` and ``forcing``.)
     """
-    wanted = {sp.sympify(e) for e in derivation.forcing} | {sp.sympify(e) for _, e in derivation.kinematic_equations}
+    code = derivation.code  # what the emitters print: the closed forms or the program (gacli.mechanics.code)
+    wanted = {sp.sympify(e) for e in code.forcing} | {sp.sympify(e) for _, e in code.kinematic_equations}
     wanted.discard(sp.S.Zero)
     candidates = [(list(exprs), result) for exprs, result in calls
                   if exprs is not None and wanted <= {sp.sympify(e) for e in exprs}]
