@@ -84,8 +84,21 @@ def program_operations(program: Program) -> int:
     return operations([*(e for _, e in program.assignments), *outputs])
 
 
+class StateNames:
+    """The state generated code takes, for a derivation with ``system`` and ``speeds``."""
+
+    @property
+    def coordinates(self) -> tuple[sp.Symbol, ...]:
+        return tuple(S.value(c.name) for c in self.system.coordinates)
+
+    @property
+    def state(self) -> tuple[sp.Symbol, ...]:
+        """Coordinates in declaration order, then u in the order of ``independent``."""
+        return self.coordinates + self.speeds
+
+
 @dataclass(frozen=True)
-class ProgramDerivation:
+class ProgramDerivation(StateNames):
     """Equations for generated code alone, by the straight-line program.
 
     What the code emitters read of a :class:`Derivation`: the system, the
@@ -116,14 +129,6 @@ class ProgramDerivation:
     @property
     def speed_rates(self) -> tuple[sp.Symbol, ...]:
         return tuple(S.rate(n, 2) for n in self.independent)
-
-    @property
-    def coordinates(self) -> tuple[sp.Symbol, ...]:
-        return tuple(S.value(c.name) for c in self.system.coordinates)
-
-    @property
-    def state(self) -> tuple[sp.Symbol, ...]:
-        return self.coordinates + self.speeds
 
     @functools.cached_property
     def code(self) -> CodeEquations:

@@ -29,7 +29,7 @@ from gacli.mechanics.forces import generalized_forces
 from gacli.mechanics.gibbs import gibbs_function
 from gacli.algebra.matrices import product
 from gacli.mechanics.axes import turned
-from gacli.mechanics.code import CodeEquations, chosen, from_closed, program_for
+from gacli.mechanics.code import CodeEquations, StateNames, chosen, from_closed, program_for
 from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
 from gacli.mechanics.rates import Rates, solve_rates
 from gacli.algebra import trig
@@ -37,7 +37,7 @@ from gacli.model import System
 
 
 @dataclass(frozen=True)
-class Derivation:
+class Derivation(StateNames):
     """Everything derived from a system; SymPy expressions in plain symbols.
 
     Symbols: a coordinate ``x`` is ``Symbol('x')``, its rate ``Symbol('dot(x)')``
@@ -101,15 +101,6 @@ class Derivation:
     @property
     def speed_rates(self) -> tuple[sp.Symbol, ...]:
         return self.rates.speed_rates
-
-    @property
-    def coordinates(self) -> tuple[sp.Symbol, ...]:
-        return tuple(S.value(c.name) for c in self.system.coordinates)
-
-    @property
-    def state(self) -> tuple[sp.Symbol, ...]:
-        """Coordinates in declaration order, then u in the order of ``independent``."""
-        return self.coordinates + self.speeds
 
     @property
     def equations(self) -> tuple[sp.Eq, ...]:
