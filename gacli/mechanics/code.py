@@ -139,7 +139,9 @@ def derive_for_code(system: System) -> ProgramDerivation | None:
     """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
     would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
     None otherwise, and the caller derives the closed forms as usual."""
-    program = program_for(system)
+    # Without `independent` in the file, the choice is the chapter's route's to make
+    # (gacli.mechanics.rates), from the rows this route does not load.
+    program = program_for(system) if system.independent is not None else None
     if program is None or program_operations(program) < PROGRAM_ALONE:
         return None
     return ProgramDerivation(system, program)
