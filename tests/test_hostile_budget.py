@@ -8,6 +8,7 @@ command are made here in ``tmp_path``: ``tests/hostile/`` holds files that
 from __future__ import annotations
 
 import re
+import sys
 import unicodedata
 from pathlib import Path
 
@@ -220,3 +221,31 @@ def test_gibbs_entries_are_the_derivatives_of_g(name: str):
         for j in range(i, d.k):
             assert sp.expand(sp.diff(d.gibbs, acc[i], acc[j]) - sparse_H.get((i, j), 0)) == 0
     assert all(value != 0 for value in [*sparse_H.values(), *sparse_g.values()])
+
+
+class _Late(Exception):
+    pass
+
+
+def test_an_alarm_inside_a_finalizer_prints_no_traceback(monkeypatch):
+    # The budget's alarm repeats until the block gives up; one that lands in a __del__ while
+    # the frames unwind cannot be raised there, and Python printed it with a traceback (a tiny
+    # --timeout on a loaded machine). It is dropped, and raised again where it can be.
+    import time
+
+    from gacli.numeric.zero import time_limit
+
+    class Slow:
+        def __del__(self):
+            end = time.monotonic() + 0.2
+            while time.monotonic() < end:
+                pass
+
+    unraisable = []  # what Python would print as "Exception ignored in ...", with a traceback
+    monkeypatch.setattr(sys, "unraisablehook", unraisable.append)
+    with pytest.raises(_Late):
+        with time_limit(0.01, _Late):
+            slow = Slow()
+            del slow  # the alarm fires inside its finalizer
+            time.sleep(2)  # and again here
+    assert unraisable == []

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import signal
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -93,11 +94,14 @@ def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[b
         return
     alarm = _Alarm(error)
     started = time.monotonic()
+    unraisable_hook = sys.unraisablehook
+    sys.unraisablehook = alarm.quiet(unraisable_hook)
     signal.signal(signal.SIGALRM, alarm.fire)
     signal.setitimer(signal.ITIMER_REAL, seconds, min(seconds, 0.2))
     try:
         yield True
     finally:
+        sys.unraisablehook = unraisable_hook
         while True:  # an alarm may land between two statements here: retry until disarmed
             try:
                 alarm.armed = False
@@ -124,6 +128,15 @@ class _Alarm:
         if self.armed:
             self.raised = self.error()
             raise self.raised
+
+    def quiet(self, previous: Callable) -> Callable:
+        """An unraisable-exception hook that drops this alarm's own error: fired inside a
+        finalizer (__del__) while the frames unwind, it cannot be raised there, and Python
+        would print it with a traceback; the alarm fires again in code that can raise it."""
+        def hook(unraisable) -> None:
+            if unraisable.exc_value is None or unraisable.exc_value is not self.raised:
+                previous(unraisable)
+        return hook
 
 
 def _numeric_zero(expr: sp.Expr, seed: int) -> Decision:
