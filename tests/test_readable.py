@@ -169,3 +169,12 @@ def test_long_equations_name_g_through_their_coefficients():
     assert written.exit_code == 0 and "ddot(delta)**2" in written.output
     # The chapter's systems are short, and print G written out.
     assert "G = I*ddot(q_z)**2/2" in _printed(SYSTEMS / "sphere_on_turntable.yaml")
+
+
+def test_many_denominators_are_not_brought_over_one(monkeypatch):
+    # together() multiplies every distinct denominator, in time quadratic in their number: past
+    # a few the reading is not tried (400 of them took 6 s for nothing).
+    y = sp.Symbol("y")
+    expr = sp.Add(*[sp.sin(delta) * L ** i / (y + i) for i in range(1, 300)])
+    monkeypatch.setattr(sp, "together", lambda e: pytest.fail("together() was called"))
+    assert over_common_denominator(expr) is None

@@ -160,3 +160,14 @@ def test_sums_of_angles_keep_their_value(terms, seed):
     expr = sp.Add(*[sp.Mul(*[factors[i] for i in term]) for term in terms])
     for x, y in zip(_values(expr, seed), _values(trig.reduce(expr), seed)):
         assert abs(x - y) <= 1e-20 + 1e-12 * abs(x)
+
+
+def test_a_large_multiple_of_an_angle_is_not_written_out():
+    # sin(θ + 100000 φ) by the addition formulas is a polynomial of degree 100000 in sin φ, cos φ:
+    # a hostile file held a derivation for minutes. Small multiples (θ − 2ψ) are still written out.
+    from gacli.algebra import angle_sums
+
+    big = sp.sin(a + 100000 * b) + sp.sin(a) * sp.cos(b)
+    assert angle_sums.expansions(big.atoms(sp.sin, sp.cos)) == {}
+    assert trig.reduce(big * sp.sin(a), cancel=True).has(sp.sin(a + 100000 * b))
+    assert angle_sums.expansions({sp.sin(a - 2 * b), sp.sin(b)})

@@ -34,14 +34,19 @@ def expansions(atoms: Iterable[sp.Expr]) -> dict[sp.Expr, sp.Expr]:
     return out
 
 
+# The largest multiple of an angle written out: sin(kφ) by the addition formulas is a
+# polynomial of degree k in sin φ and cos φ (sin(θ + 100000 φ) held a derivation for minutes).
+MAX_MULTIPLE = 3
+
+
 def _is_sum_of_angles(arg: sp.Expr) -> bool:
-    """θ + δ, θ − 2ψ, φ + π/2: symbols with integer multiples, and rational multiples of π."""
+    """θ + δ, θ − 2ψ, φ + π/2: symbols with small integer multiples, and rational multiples of π."""
     if not arg.is_Add:
         return False
     for term in arg.args:
         coefficient, rest = term.as_coeff_Mul()
         if rest is sp.pi and coefficient.is_Rational:
             continue
-        if not (rest.is_Symbol and coefficient.is_Integer):
+        if not (rest.is_Symbol and coefficient.is_Integer and abs(coefficient) <= MAX_MULTIPLE):
             return False
     return True

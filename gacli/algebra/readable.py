@@ -18,6 +18,7 @@ at most 150 operations.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import sympy as sp
@@ -147,7 +148,7 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     beside its own part of the numerator, and a coefficient such as m_c L² c² repeats
     under both. Monomial denominators (the r² of C_w/r²) stay in the coefficients.
     """
-    if not _expands_small(expr, COLLECT_TERMS):
+    if not _expands_small(expr, COLLECT_TERMS) or len(_sum_denominators(expr)) > MAX_DENOMINATORS:
         return None
     numerator, denominator = sp.fraction(sp.together(expr))
     if not _expands_small(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
@@ -160,6 +161,15 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
         return None
     numerator = trig.reduce(sp.expand(numerator), cancel=True)
     return collected(sp.expand(numerator), sp.Mul(*monomials)) / sp.Mul(*sums)
+
+
+# Distinct sums in denominators past which no common denominator is formed: ``together``
+# multiplies them all, in time quadratic in their number (400 of them took 6 s).
+MAX_DENOMINATORS = 8
+
+
+def _sum_denominators(expr: sp.Expr) -> set[sp.Expr]:
+    return {node.base for node in postorder([expr]) if node.is_Pow and node.exp.is_negative and node.base.is_Add}
 
 
 def collected(expanded: sp.Expr, below: sp.Expr = sp.S.One) -> sp.Expr:
@@ -196,14 +206,13 @@ def _factored(coefficient: sp.Expr) -> sp.Expr:
     plain = sp.factor_terms(coefficient)
     if len(sp.Add.make_args(sp.expand(plain))) < 3 or not _factorable(coefficient):
         return plain  # two terms factor into something no shorter ((b − w)(b + w))
-    factored = _FACTORED.get(coefficient)
-    if factored is None:
-        factored = _FACTORED[coefficient] = sp.factor(coefficient)
+    factored = _factor(coefficient)
     return factored if len(str(factored)) < len(str(plain)) else plain
 
 
-# Factorizations met so far: the same coefficient recurs in every entry of M and F.
-_FACTORED: dict[sp.Expr, sp.Expr] = {}
+@functools.lru_cache(maxsize=4096)  # the same coefficient recurs in every entry of M and F
+def _factor(coefficient: sp.Expr) -> sp.Expr:
+    return sp.factor(coefficient)
 
 
 def _factorable(expr: sp.Expr) -> bool:

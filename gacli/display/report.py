@@ -111,10 +111,16 @@ def equations(d: Derivation, c: Coefficients) -> Section:
     return Section("Gibbs-Appell equations, eq. (14.19)", tuple(lines))
 
 
-def gibbs_of(d: Derivation, c: Coefficients) -> Section:
-    """G from the equations' own coefficients: written out when short, else named through them."""
+def gibbs_of(d: Derivation, c: Coefficients, tidy: Tidy) -> Section:
+    """G from the equations' own coefficients: written out when short, else named through them.
+
+    ½ M_ii is read again (``(5 sin² θ + 2)/10``, not ``(sin² θ + 2/5)/2``) when the
+    coefficients are short enough for G to be written out at all.
+    """
     acc = d.speed_rates
-    terms = [e * acc[i] ** 2 / 2 if i == j else e * acc[i] * acc[j] for (i, j), e in sorted(c.mass.items()) if i <= j]
+    short = sum(len(show(e)) for e in (*c.mass.values(), *c.rest)) <= GIBBS_WRITTEN_OUT
+    terms = [(tidy(e / 2) if short else e / 2) * acc[i] ** 2 if i == j else e * acc[i] * acc[j]
+             for (i, j), e in sorted(c.mass.items()) if i <= j]
     G = show(sp.Add(*terms, *(r * a for r, a in zip(c.rest, acc))))
     if len(G) <= GIBBS_WRITTEN_OUT:
         return Section(GIBBS_TITLE, (f"G = {G} + ...",))
@@ -147,7 +153,8 @@ def derivation_report(d: Derivation) -> tuple[Section, ...]:
     if not displayable(d):
         return (freedom(d), too_large())
     c = coefficients(d, Tidy())
-    return (freedom(d), rates(d, Tidy()), gibbs_of(d, c), forces(d, Tidy()), equations(d, c), kinematic(d, Tidy()))
+    return (freedom(d), rates(d, Tidy()), gibbs_of(d, c, Tidy()), forces(d, Tidy()), equations(d, c),
+            kinematic(d, Tidy()))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:

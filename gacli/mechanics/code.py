@@ -12,9 +12,9 @@ always write the same code:
 
 - a program of at least :data:`PROGRAM_ALONE` operations is taken without
   forming the closed forms at all (a bicycle's are millions of nodes as
-  trees, 4,279 operations after sharing, against the program's 1,053);
-- otherwise the one of fewer operations (a rolling disk's closed forms: 66
-  against 92; a robot towing a trailer's program: 275 against 1,395).
+  trees, 4,279 operations after sharing, against the program's 1,322);
+- otherwise the one of fewer operations (a rolling disk's closed forms: 56
+  against 89; a robot towing a trailer's program: 386 against 1,390).
 
 The program's expressions are graphs sharing their subexpressions, built
 unevaluated (:func:`gacli.mechanics.program.inline`): they must be walked

@@ -64,6 +64,7 @@ def program_of(system: System) -> Program:
     motion, contacts, root = _setup(system, independent)
     names = [c.name for c in system.coordinates]
     at_root = R.root_coordinates(motion.links, motion.root, motion.coordinates)
+    _check_root_alone(motion, at_root)
     reduced = [q for q in names if q not in at_root]
     dependent = [q for q in reduced if q not in independent]
     others = [c for c in contacts if root is None or c is not root[1]]
@@ -75,6 +76,17 @@ def program_of(system: System) -> Program:
     rates = _kinematics(motion, names, at_root, passes.actual)
     passes = _gamma(motion, kept, solver, dependent, passes)
     return replace(_dynamics(system, motion, passes, rates, at_root), independent=tuple(independent))
+
+
+def _check_root_alone(motion: Motion, at_root) -> None:
+    """The free root's coordinates (x, y of a vehicle) have no rates in the passes: their velocity
+    is the root's, from its contact. A point other than the root written with them (a payload at
+    [x, y, h], a force at [x, y, r]) would move as if they stood still."""
+    symbols = {motion.coordinates[q] for q in at_root}
+    for name, link in motion.links.items():
+        if name != motion.root and any(c.free_symbols & symbols for c in link.components):
+            raise Unsupported(f"the point '{name.rstrip('@')}' is written with the coordinates of the "
+                              "rolling root; write it from the root instead")
 
 
 def _rates(motion: Motion, kept: R.Rows, independent, dependent) -> tuple[Solver, Passes]:

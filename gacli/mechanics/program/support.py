@@ -12,6 +12,8 @@ larger than the adjugate solve takes.
 
 from __future__ import annotations
 
+import dataclasses
+
 import sympy as sp
 
 from gacli.algebra import symbols as S
@@ -28,7 +30,7 @@ def static_reason(system: System) -> str | None:
     model = system.frames
     if model is None:
         return "the file is written without frames, points or rolling (format 1)"
-    for check in (_features, _frames, _bodies, _rolling, _loads):
+    for check in (_features, _small_numbers, _frames, _bodies, _rolling, _loads):
         reason = check(system, model)
         if reason:
             return reason
@@ -47,6 +49,36 @@ def _features(system: System, model: FrameModel) -> str | None:
     if system.potential.has(S.T) or (system.work is not None and (system.work.dt != 0 or _timed(system.work))):
         return "a potential or work that depends on time is not supported"
     return None
+
+
+# The tape tells a vanishing entry by its values at generic points, with quantities of order
+# one (gacli.mechanics.program.tape): a number written this small in the file (a load of
+# 1e-12 K) would pass for a rounding error there.
+SMALLEST_NUMBER = 1e-6
+
+
+def _small_numbers(system: System, model: FrameModel) -> str | None:
+    exprs = [e for e in _expressions(model)]
+    exprs += [system.potential] + ([c for _, c in system.work.coefficients] if system.work is not None else [])
+    for e in exprs:
+        for number in e.atoms(sp.Number):
+            if number != 0 and abs(float(number)) < SMALLEST_NUMBER:
+                return f"the number {number} is smaller than {SMALLEST_NUMBER:g}, where the program's zero tests do not tell it from a rounding error"
+    return None
+
+
+def _expressions(value):
+    """Every SymPy expression in the frame model's records."""
+    if isinstance(value, sp.MatrixBase):
+        yield from (e for e in value if isinstance(e, sp.Basic))
+    elif isinstance(value, sp.Basic):
+        yield value
+    elif isinstance(value, (tuple, list)):
+        for item in value:
+            yield from _expressions(item)
+    elif dataclasses.is_dataclass(value):
+        for f in dataclasses.fields(value):
+            yield from _expressions(getattr(value, f.name))
 
 
 def _timed(work) -> bool:

@@ -174,8 +174,12 @@ def units(tree: FrameTree, links: dict[str, PointLink], bodies: tuple[BodyPlacem
 
 
 def _join(tree, links, group: dict, body: BodyPlacement, options: dict, coordinates: set) -> bool:
-    """Add the body to the group if they share a frame where both are constant and their centres fixed."""
-    if any(b.inertia is None for b, _ in group["members"]):
+    """Add the body to the group if they share a frame where both are constant and their centres fixed.
+
+    Only bodies whose masses are positive numbers are gathered: a composite's centre and
+    reduced mass divide by the total, which a parameter can make zero (massless wheels set
+    at run time), where the chapter's route still has a positive definite M."""
+    if any(b.inertia is None or not _positive(b.mass) for b, _ in [*group["members"], (body, None)]):
         return False
     common = group["frames"] & set(options)
     own = [links[b.point].frame for b, _ in group["members"]] + [links[body.point].frame]
@@ -186,6 +190,10 @@ def _join(tree, links, group: dict, body: BodyPlacement, options: dict, coordina
             group["frames"] = common
             return True
     return False
+
+
+def _positive(mass: sp.Expr) -> bool:
+    return bool(mass.is_Number and mass > 0)
 
 
 def _offsets(tree, links, members: list[BodyPlacement], frame: str, coordinates: set):
