@@ -239,3 +239,15 @@ def test_standalone_compiles_with_special_characters_in_free_text(tmp_path):
     ((name, text),) = emit_latex(derive(loads(OVERRIDE_SYSTEM)), standalone=True).items()
     assert text.split(r"\begin{document}")[1].isascii()
     _compile(text, name, tmp_path)
+
+
+def test_long_equations_name_g_through_their_coefficients_in_latex_too():
+    # As the text report: G repeats the equations' coefficients, and a robot's is named, not written out.
+    from gacli.loader.loading import load
+    from gacli.mechanics.equations import derive
+
+    robot = Path(__file__).resolve().parent / "twins" / "tricycle_front_drive.yaml"
+    text = emit_latex(derive(load(robot)))["tricycle_front_drive.tex"]
+    assert r"\texttt{gacli gibbs} writes it out" in text and "G &=" not in text
+    disk = emit_latex(derived("rolling_disk"))["rolling_disk.tex"]
+    assert "G &=" in disk

@@ -36,7 +36,6 @@ from gacli.emit.latex_printer import GacliLatexPrinter, printer_for
 from gacli.emit.latex_text import TEXT_LINE, tex_text
 from gacli.read.textsafe import one_line
 from gacli.mechanics.equations import Derivation
-from gacli.mechanics.gibbs import gibbs_coefficients
 from gacli.model import System
 from gacli.algebra.readable import TOO_LARGE, displayable
 from gacli.version import __version__
@@ -70,11 +69,11 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
 
         sections = step_sections(derivation)
     else:
+        equations = _equation_rows(derivation, printer)
         sections = [
-            Section("Gibbs function (eq. 14.21)", _GIBBS_NOTE, [_gibbs_rows(derivation, printer)]),
+            _gibbs_section(derivation, printer, equations),
             Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer)),
-            Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer),
-                     _equation_rows(derivation, printer), gap="[1ex]"),
+            Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer), equations, gap="[1ex]"),
             _kinematic_section(derivation, printer),
         ]
     lines = _header(system)
@@ -136,6 +135,20 @@ def _document(system: System, sections) -> list[str]:
 
 
 _GIBBS_NOTE = r"Terms free of the accelerations are dropped ($\dots$)."
+# Characters of LaTeX past which the equations' coefficients are not written out again as G
+# (as the text report's 2,000 characters, gacli.display.report.GIBBS_WRITTEN_OUT).
+GIBBS_WRITTEN_OUT = 4_000
+_GIBBS_NAMED = (r"$G = \frac{1}{2} \sum_{r,s} M_{rs} \ddot{u}_r \ddot{u}_s + \sum_s (Q_s - F_s) \ddot{u}_s + \dots$, "
+                r"whose coefficients are those of the Gibbs-Appell equations below, "
+                r"$\partial G / \partial \ddot{u}_s = \sum_r M_{sr} \ddot{u}_r + Q_s - F_s$; "
+                r"\texttt{gacli gibbs} writes it out.")
+
+
+def _gibbs_section(derivation: Derivation, printer: GacliLatexPrinter, equations: list[list[str]]) -> "Section":
+    """G written out, or named through the equations' coefficients when they are long."""
+    if sum(len(line) for group in equations for line in group) > GIBBS_WRITTEN_OUT:
+        return Section("Gibbs function (eq. 14.21)", _GIBBS_NAMED, [], shown=True)
+    return Section("Gibbs function (eq. 14.21)", _GIBBS_NOTE, [_gibbs_rows(derivation, printer)])
 
 
 def _equations_note(derivation: Derivation, printer: GacliLatexPrinter) -> str:
@@ -146,16 +159,25 @@ def _equations_note(derivation: Derivation, printer: GacliLatexPrinter) -> str:
 # -- the blocks --------------------------------------------------------------
 
 def _gibbs_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[str]:
-    """G = ½ Σ H_ij ü_i ü_j + Σ g_i ü_i + … grouped by the accelerations."""
-    H, g = gibbs_coefficients(derivation.gibbs, derivation.rates)
+    """G = ½ Σ H_ij ü_i ü_j + Σ g_i ü_i + … grouped by the accelerations.
+
+    H and g are the equations' own coefficients, ∂G/∂ü_s = Σ M_sr ü_r + Q_s − F_s
+    (eq. 14.19), tidied once for both blocks, as the text report reads them.
+    """
+    M, rest = derivation.mass_matrix, _rest(derivation)
     a = derivation.speed_rates
     k = len(a)
-    terms = [t for i in range(k) if (t := half_term(tidy(H[i, i]), a[i] ** 2, printer))]
-    pairs = [(H[i, j], a[i] * a[j]) for i in range(k) for j in range(i + 1, k)] + list(zip(g, a))
+    terms = [t for i in range(k) if (t := half_term(tidy(M[i, i]), a[i] ** 2, printer))]
+    pairs = [(M[i, j], a[i] * a[j]) for i in range(k) for j in range(i + 1, k)] + list(zip(rest, a))
     for c, m in pairs:
         terms += _breakable_product(tidy(c), m, printer)
     terms.append((False, r"\dots"))
     return sum_rows("G", terms)
+
+
+def _rest(derivation: Derivation) -> list[sp.Expr]:
+    """Q − F of each equation: the acceleration-free part of ∂G/∂ü."""
+    return [q - f for q, f in zip(derivation.generalized_forces, derivation.forcing)]
 
 
 def _breakable_product(coefficient: sp.Expr, monomial: sp.Expr, printer: GacliLatexPrinter) -> list[Term]:
@@ -178,12 +200,12 @@ def _force_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list
 
 def _equation_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
     """∂G/∂u̇_s = Σ_r M_sr u̇_r + (Q_s − F_s) = Q_s for each s."""
-    M, F, Q = derivation.mass_matrix, derivation.forcing, derivation.generalized_forces
+    M, Q, rest = derivation.mass_matrix, derivation.generalized_forces, _rest(derivation)
     a = derivation.speed_rates
     groups = []
     for s, u in enumerate(a):
         terms = [t for r in range(len(a)) if (t := product_term(tidy(M[s, r]), a[r], printer))]
-        terms += signed_terms(tidy(Q[s] - F[s]), printer, WIDE - _LABEL)
+        terms += signed_terms(tidy(rest[s]), printer, WIDE - _LABEL)
         label = rf"\frac{{\partial G}}{{\partial {printer.doprint(u)}}}"
         groups.append(sum_rows(label, terms or ZERO, signed_terms(tidy(Q[s]), printer) or ZERO))
     return groups

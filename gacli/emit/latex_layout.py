@@ -8,6 +8,7 @@ written expanded so that it can break.
 
 from __future__ import annotations
 
+import functools
 import re
 import sys
 from typing import NamedTuple
@@ -42,6 +43,7 @@ Term = tuple[bool, str]  # (negative, LaTeX of the magnitude)
 ZERO: list[Term] = [(False, "0")]
 
 
+@functools.lru_cache(maxsize=1024)  # G and the equations read the same coefficients
 def tidy(expr: sp.Expr) -> sp.Expr:
     """The display simplifier that text uses too (:func:`gacli.algebra.readable.readable`), within its size bounds."""
     return Tidy(budget=sys.maxsize)(expr)
