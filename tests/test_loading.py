@@ -197,3 +197,20 @@ def test_a_circle_of_points_is_one_clear_error(points):
         loads(POINTS % points, "f.yaml")
     (diagnostic,) = info.value.diagnostics
     assert "in a circle" in diagnostic.message and "is not a point" not in str(info.value)
+
+
+@pytest.mark.parametrize("error", [RecursionError, OverflowError])
+def test_a_file_sympy_cannot_evaluate_is_one_located_error(error, monkeypatch):
+    # A frame turned by 1e300*delta made SymPy recurse without end in a rolling row (a traceback
+    # from every command before): the loader says so at the file, as any problem of the file.
+    from gacli.errors import SystemFileError
+    from gacli.loader import loading
+
+    def fail(self):
+        raise error("deep")
+
+    monkeypatch.setattr(loading._Builder, "system", fail)
+    with pytest.raises(SystemFileError, match=r"cannot be loaded: .* to evaluate") as caught:
+        loading.loads("gacli: 1\nname: x\ncoordinates: [q]\nbodies: {b: {mass: 1, position: [q, 0, 0]}}\n",
+                      path="bad.yaml")
+    assert caught.value.diagnostics[0].location.path == "bad.yaml"

@@ -63,7 +63,14 @@ def load_source(source: SourceFile, *, rolling_rows: bool = True) -> System:
     if diagnostics or decl is None:
         raise SystemFileError(diagnostics)
     builder = _Builder(decl, rolling_rows=rolling_rows)
-    system = builder.system()
+    try:
+        system = builder.system()
+    except (RecursionError, OverflowError) as exc:
+        # A frame turned by 1e300*delta made SymPy recurse without end in a rolling row:
+        # one located message, as every other problem of the file, not a traceback.
+        why = "an expression nests too deeply" if isinstance(exc, RecursionError) else "a number is too large"
+        raise SystemFileError([Diagnostic(Location(source.path, 1, 1),
+                                          f"the file cannot be loaded: {why} to evaluate ({type(exc).__name__})")])
     if builder.diagnostics:
         raise SystemFileError(sorted(builder.diagnostics, key=lambda d: d.location))
     return system
