@@ -18,6 +18,7 @@ from collections.abc import Iterable
 
 import sympy as sp
 
+from gacli.algebra.coerce import as_expr
 from gacli.numeric import Program as Evaluator
 from gacli.numeric.samples import SAMPLE_INTERVAL
 
@@ -46,7 +47,7 @@ class Tape:
 
     def let(self, e) -> sp.Expr:
         """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are."""
-        e = e if isinstance(e, sp.Basic) else sp.sympify(e)
+        e = as_expr(e)
         if _trivial(e):
             return e
         hit = self._memo.get(e)
@@ -67,11 +68,11 @@ class Tape:
 
     def values(self, e: sp.Expr) -> list[complex]:
         """``e`` (over state symbols and assigned ones) at each generic point."""
-        return [v[0] for v in self._values([sp.sympify(e)])]
+        return [v[0] for v in self._values([as_expr(e)])]
 
     def vanishes(self, e) -> bool:
         """``e`` is zero at every generic point (relative to the size of its terms): taken as identically zero."""
-        e = sp.sympify(e)
+        e = as_expr(e)
         if e == 0:
             return True
         terms = list(sp.Add.make_args(e))
