@@ -22,7 +22,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.algebra import angle_sums
-from gacli.algebra.graph import expanded_terms, postorder
+from gacli.algebra.graph import expanded_terms, postorder, substitute
 
 
 # Terms of the distributed polynomial past which the reduction is not tried:
@@ -64,7 +64,10 @@ def reduce(expr: sp.Expr, cancel: bool = False) -> sp.Expr:
     # reduction a normal form (a steered wheel's rows). Kept only when shorter: a
     # hitch angle θ − θ_T beside θ and θ_T is the shorter angle to keep whole.
     sums = angle_sums.expansions(memo)
-    written_out = _reduced_or_none(expr.xreplace(sums), cancel, {_WORK: 0}) if sums else None
+    # Substituted over the graph: SymPy's xreplace walks every path of a tree
+    # whose subexpressions are shared (a bicycle's dependent accelerations:
+    # 7.6 million calls for 74 entries, a derivation that never ended).
+    written_out = _reduced_or_none(substitute([expr], sums)[0], cancel, {_WORK: 0}) if sums else None
     candidates = [e for e in (plain, written_out) if e is not None]
     return min(candidates, key=_nodes) if candidates else expr
 

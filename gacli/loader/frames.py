@@ -51,6 +51,8 @@ class Frame:
     dcm: sp.ImmutableMatrix
     omega: sp.ImmutableMatrix
     origin: tuple[sp.Expr, ...] | None = None
+    # The simple rotations from N that reach it, runs about one axis merged (see canonical_chain).
+    chain: tuple[tuple[str, sp.Expr], ...] = ()
 
 
 def inertial_frame(width: int) -> Frame:
@@ -63,7 +65,16 @@ def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
 
     ω_child = R_relᵀ ω_parent + Σ_i (axis_i in child axes) d(angle_i), where
     the i-th axis is carried to the child by the rotations after it.
+
+    A frame turned by an angle sum (``q4 + htangle``), or turned back about the
+    axis its parent was turned about (``-htangle``), is built from its
+    canonical chain, one simple rotation at a time from N: exactly as the same
+    turns written as one frame each, so that either writing gives the same
+    expressions, and so the same equations at the same cost.
     """
+    chain, changed = canonical_chain(parent.chain, rotations, differential)
+    if changed:
+        return _from_chain(name, chain, parent.omega.cols, differential)
     relative = sp.eye(3).tolist()
     for axis, angle in rotations:
         relative = _product(relative, simple_rotation(axis, angle).tolist())
@@ -73,7 +84,41 @@ def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
         omega += (after.T * unit(axis)) * differential(angle)
         after = simple_rotation(axis, angle) * after
     return Frame(name, sp.ImmutableMatrix(_product(parent.dcm.tolist(), relative)),
-                 sp.ImmutableMatrix(omega.applyfunc(sp.expand_trig)))
+                 sp.ImmutableMatrix(omega.applyfunc(sp.expand_trig)), chain=chain)
+
+
+def canonical_chain(start: Sequence[tuple[str, sp.Expr]], rotations: Sequence[tuple[str, sp.Expr]],
+                    differential: Callable[[sp.Expr], sp.Matrix]) -> tuple[tuple[tuple[str, sp.Expr], ...], bool]:
+    """``start`` followed by ``rotations``, each run about one axis written as one turn per term of its sum.
+
+    Turns about one axis commute, so a run is the sum of its angles: terms that
+    cancel go, and the rest are ordered coordinates first. Whether anything
+    changed (an angle split, a term cancelled): otherwise the chain is the
+    rotations as written, and the frame is built as it always was.
+    """
+    chain: list[tuple[str, sp.Expr]] = list(start)
+    changed = False
+    for axis, angle in rotations:
+        run = [angle]
+        while chain and chain[-1][0] == axis:
+            run.insert(0, chain.pop()[1])
+        terms = [t for t in sp.Add.make_args(sp.Add(*run)) if t != 0]
+        if sorted(map(sp.srepr, terms)) != sorted(map(sp.srepr, run)):
+            changed = True
+            terms.sort(key=lambda t: (bool(differential(t).is_zero_matrix), sp.default_sort_key(t)))
+        else:
+            terms = run
+        chain.extend((axis, t) for t in terms)
+    return tuple(chain), changed
+
+
+def _from_chain(name: str, chain: Sequence[tuple[str, sp.Expr]], width: int,
+                differential: Callable[[sp.Expr], sp.Matrix]) -> Frame:
+    """The frame at the end of ``chain``, built as a chain of one-turn frames from N."""
+    frame = inertial_frame(width)
+    for axis, angle in chain:
+        frame = oriented(name, frame, [(axis, angle)], differential)
+    return Frame(name, frame.dcm, frame.omega, chain=tuple(chain))
 
 
 def _product(a: list[list[sp.Expr]], b: list[list[sp.Expr]]) -> list[list[sp.Expr]]:
