@@ -34,6 +34,7 @@ import argparse
 import json
 import os
 import resource
+import signal
 import subprocess
 import sys
 import tempfile
@@ -258,13 +259,28 @@ def compare(ours: dict, theirs: dict) -> float:
 # -- the command line, in fresh processes ---------------------------------------------
 
 def child_run(argv: list[str], timeout: float) -> dict:
-    """Run a child; its CPU seconds (from RUSAGE_CHILDREN), exit code, output size, or a timeout."""
+    """Run a child under ``timeout`` seconds of CPU: its CPU seconds, exit code, output, or a timeout.
+
+    The limit is on CPU time (RLIMIT_CPU), not wall time, so that a system's
+    verdict does not depend on what else the shared machine runs; a wall-clock
+    guard of four times the limit catches a child that waits instead.
+    """
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(ROOT), os.environ.get("PYTHONPATH")]))}
+    limit = max(1, int(round(timeout)))
+
+    def cpu_limit():
+        resource.setrlimit(resource.RLIMIT_CPU, (limit, limit + 5))
+
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     wall = time.perf_counter()
     try:
-        done = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True, timeout=timeout)
-        result = {"rc": done.returncode, "chars": len(done.stdout), "stderr": done.stderr[-400:]}
+        done = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True, timeout=4 * limit + 30,
+                              preexec_fn=cpu_limit)
+        result = {"rc": done.returncode, "chars": len(done.stdout), "stderr": done.stderr[-400:],
+                  "too_large": "too large to print" in done.stdout,
+                  "out_of_time": "ran out of time" in done.stderr}
+        if done.returncode in (-signal.SIGXCPU, -signal.SIGKILL):
+            result["timeout"] = True
     except subprocess.TimeoutExpired:
         result = {"rc": None, "timeout": True}
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -280,7 +296,7 @@ def gacli_commands(path: Path, timeout: float) -> dict:
             "derive_text": child_run([*gacli, "derive", str(path), "--timeout", "0"], timeout),
             "derive_c": child_run([*gacli, "derive", str(path), "--format", "c", "--output", scratch,
                                    "--timeout", "0"], timeout),
-            "check": child_run([*gacli, "check", str(path), "--timeout", f"{timeout:g}"], timeout + 30),
+            "check": child_run([*gacli, "check", str(path), "--timeout", f"{timeout:g}"], timeout),
         }
 
 
@@ -304,7 +320,7 @@ def run_worker(name: str, options, code_only: bool) -> dict:
         run = child_run([*argv, "--code-only"] if code_only else argv, options.timeout)
         data = json.loads(out.read_text(encoding="utf-8")) if out.exists() else {"stage": "start"}
     data["cpu_s"], data["timeout"] = run["cpu_s"], bool(run.get("timeout"))
-    if run.get("rc") not in (0, None):
+    if run.get("rc") not in (0, None) and not run.get("timeout"):
         data["error"] = run.get("stderr", "").strip().splitlines()[-1:] or ["?"]
     return data
 
@@ -314,6 +330,8 @@ def run_worker(name: str, options, code_only: bool) -> dict:
 def _seconds(run: dict) -> str:
     if run.get("timeout"):
         return f"timeout ({run['cpu_s']:.0f})"
+    if run.get("out_of_time"):
+        return f"out of time ({run['cpu_s']:.0f})"
     return f"{run['cpu_s']:.2f}" + ("" if run.get("rc") == 0 else f" (exit {run.get('rc')})")
 
 
@@ -334,12 +352,16 @@ def row(result: dict) -> list[str]:
     ratio = f"{ours / kane:.2f}" if kane and ours else "n/a"
     check = result["check"]
     check_text = "timeout" if check.get("timeout") else str(check["rc"])
+    if check.get("out_of_time"):
+        check_text += " (ran out of time)"
     text = result["derive_text"]
+    chars = f"{text['chars']:,}" + (" (too large to print)" if text.get("too_large") else "") \
+        if text.get("rc") == 0 else "n/a"
     return [result["system"], str(ops.get("k", w.get("k", "?"))), _agreement(w) + ("" if not result.get("code_only")
             or "agreement" not in result["code_only"] else f"; code {max(result['code_only']['agreement'].values()):.0e}"),
             f"{kane:,}" if kane else "n/a", (f"{ours:,}" if ours else "n/a") + note, ratio, ops.get("route", "n/a"),
             _seconds(text), _seconds(result["derive_c"]), check_text,
-            f"{text['chars']:,}" if text.get("rc") == 0 else "n/a",
+            chars,
             f"{w['gacli_s']:.2f}" if "gacli_s" in w else "n/a", f"{w['kane_s']:.2f}" if "kane_s" in w else "n/a"]
 
 
@@ -351,7 +373,7 @@ HEADER = ["system", "k", "agree (max rel., 3 states)", "ops Kane", "ops gacli", 
 def parse(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--only", help="one system, or several separated by commas")
-    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per process (default 60)")
+    parser.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per process (default 60)")
     parser.add_argument("--seed", type=int, default=20261126, help="the random states")
     parser.add_argument("--json", type=Path, help="also save every number here")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
@@ -373,12 +395,12 @@ def main(argv=None) -> int:
     if unknown:
         print(f"unknown system(s) {', '.join(unknown)}; the set: {', '.join(SYSTEMS)}", file=sys.stderr)
         return 2
-    results = []
+    results, start = [], time.perf_counter()
     for name in names:
-        print(f"{name} ...", file=sys.stderr, flush=True)
+        print(f"{name} ... ({time.perf_counter() - start:.0f} s so far)", file=sys.stderr, flush=True)
         results.append(measure(name, options))
     info = machine()
-    print(f"# The Kane set: gacli against SymPy's KanesMethod (timeout {options.timeout:g} s per process)\n")
+    print(f"# The Kane set: gacli against SymPy's KanesMethod (timeout {options.timeout:g} s CPU per process)\n")
     print(f"machine: {info['platform']}, {info['cpu_count']} CPUs; Python {info['python']}, "
           f"SymPy {info['sympy']}, gacli {info['gacli']}\n")
     print(markdown(HEADER, [row(r) for r in results]))

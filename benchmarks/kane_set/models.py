@@ -155,6 +155,30 @@ def quaternion_body() -> Reference:
     return Reference(KaneModel(kane, q, u, [], P), _named(q), configuration=norm, q_dep=[q0], spread=0.5)
 
 
+def quaternion_top() -> Reference:
+    """A heavy top about a fixed point: Euler parameters q0..q3, body rates u1..u3."""
+    q0, q1, q2, q3 = q = list(me.dynamicsymbols("q0 q1 q2 q3"))
+    u = list(me.dynamicsymbols("u1:4"))
+    P = _symbols("m l A C g")
+    N = me.ReferenceFrame("N")
+    B = me.ReferenceFrame("B")
+    B.orient_quaternion(N, q)
+    B.set_ang_vel(N, u[0] * B.x + u[1] * B.y + u[2] * B.z)
+    t = me.dynamicsymbols._t
+    E = sp.Matrix([[-q1, q0, q3, -q2], [-q2, -q3, q0, q1], [-q3, q2, -q1, q0]])
+    qdot = E.T * sp.Matrix(u) / 2
+    kd = [qi.diff(t) - qdot[i] for i, qi in enumerate(q)]
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", P["l"] * B.z)
+    G.v2pt_theory(O, N, B)
+    body = me.RigidBody("top", G, B, P["m"], (me.inertia(B, P["A"], P["A"], P["C"]), G))
+    kane = me.KanesMethod(N, q_ind=q, u_ind=u, kd_eqs=kd)
+    kane.kanes_equations([body], [(G, -P["m"] * P["g"] * N.z)])
+    norm = [q0**2 + q1**2 + q2**2 + q3**2 - 1]
+    return Reference(KaneModel(kane, q, u, [], P), _named(q), configuration=norm, q_dep=[q0], spread=0.5)
+
+
 # -- linkages and chains --------------------------------------------------------------
 
 def _bar(name, frame, centre, mass, length):
@@ -321,6 +345,8 @@ SYSTEMS = {
                          "the same with body rates as speeds"),
     "quaternion_body": (HERE / "quaternion_body.yaml", quaternion_body,
                         "free body, Euler parameters, body rates, unit norm as a constraint"),
+    "quaternion_top": (HERE / "quaternion_top.yaml", quaternion_top,
+                       "heavy top about a fixed point, Euler parameters, body rates"),
     "four_bar": (HERE / "four_bar.yaml", four_bar, "four-bar linkage, two holonomic constraints"),
     "planar_chain": (HERE / "planar_chain.yaml", planar_chain, "3 rigid bars in a plane"),
     "spatial_chain": (HERE / "spatial_chain.yaml", spatial_chain, "3 rigid links, ball joints, XYZ angles"),
