@@ -49,6 +49,8 @@ for entry in (str(HERE / "kane_set"), str(HERE), str(ROOT)):
 
 STATES = 3
 TOLERANCE = 1e-8
+# Past this many tree nodes in one expression SymPy's cse is not tried (gacli.algebra.graph.LARGE_TREE).
+SYMPY_CSE_NODES = 20_000
 
 
 # -- the worker: one system, in its own process ---------------------------------------
@@ -107,7 +109,21 @@ def worker(name: str, out: Path, code_only: bool, seed: int) -> None:
         for label, side in forms.items():
             errors[label].append(compare(side.evaluate(values), theirs))
     stages.record(agreement={label: max(e) for label, e in errors.items() if e})
+    stages.enter("SymPy cse")
+    stages.record(cse_kane=sympy_cse_ops(kane_exprs))
+    stages.record(cse_gacli=sympy_cse_ops(ours))
     stages.enter("done")
+
+
+def sympy_cse_ops(exprs) -> int | None:
+    """``count_ops`` after SymPy's canonical ``cse`` (bench_util.cse_count), the issue's counting; None
+    when the expressions are too large to walk as trees (the bicycle's are millions of nodes)."""
+    from bench_util import cse_count
+    from gacli.algebra.graph import is_small
+
+    if not all(is_small(e, SYMPY_CSE_NODES) for e in exprs):
+        return None
+    return cse_count(exprs).operations
 
 
 def _derive(path: Path, code_only: bool):
@@ -350,6 +366,8 @@ def row(result: dict) -> list[str]:
     note = "" if ops is w else " (code route only)"
     kane, ours = w.get("ops_kane"), ops.get("ops_gacli")
     ratio = f"{ours / kane:.2f}" if kane and ours else "n/a"
+    cse_kane, cse_ours = ops.get("cse_kane"), ops.get("cse_gacli")
+    cse = f"{cse_ours:,} / {cse_kane:,} = {cse_ours / cse_kane:.2f}" if cse_kane and cse_ours else "n/a"
     check = result["check"]
     check_text = "timeout" if check.get("timeout") else str(check["rc"])
     if check.get("out_of_time"):
@@ -359,13 +377,15 @@ def row(result: dict) -> list[str]:
         if text.get("rc") == 0 else "n/a"
     return [result["system"], str(ops.get("k", w.get("k", "?"))), _agreement(w) + ("" if not result.get("code_only")
             or "agreement" not in result["code_only"] else f"; code {max(result['code_only']['agreement'].values()):.0e}"),
-            f"{kane:,}" if kane else "n/a", (f"{ours:,}" if ours else "n/a") + note, ratio, ops.get("route", "n/a"),
+            f"{kane:,}" if kane else "n/a", (f"{ours:,}" if ours else "n/a") + note, ratio, cse,
+            ops.get("route", "n/a"),
             _seconds(text), _seconds(result["derive_c"]), check_text,
             chars,
             f"{w['gacli_s']:.2f}" if "gacli_s" in w else "n/a", f"{w['kane_s']:.2f}" if "kane_s" in w else "n/a"]
 
 
-HEADER = ["system", "k", "agree (max rel., 3 states)", "ops Kane", "ops gacli", "gacli/Kane", "route",
+HEADER = ["system", "k", "agree (max rel., 3 states)", "ops Kane", "ops gacli", "gacli/Kane",
+          "SymPy cse: gacli / Kane", "route",
           "derive text [s CPU]", "derive C [s CPU]", "check exit", "text chars", "gacli API [s CPU]",
           "Kane [s CPU]"]
 
