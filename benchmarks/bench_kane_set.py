@@ -49,8 +49,9 @@ for entry in (str(HERE / "kane_set"), str(HERE), str(ROOT)):
 
 STATES = 3
 TOLERANCE = 1e-8
-# Past this many tree nodes in one expression SymPy's cse is not tried (gacli.algebra.graph.LARGE_TREE).
-SYMPY_CSE_NODES = 20_000
+# Past this many tree nodes in one expression SymPy's cse is not tried: the rattleback's 500,000
+# take it 5 s, the bicycle's millions far longer.
+SYMPY_CSE_NODES = 1_000_000
 
 
 # -- the worker: one system, in its own process ---------------------------------------
@@ -366,8 +367,9 @@ def row(result: dict) -> list[str]:
     note = "" if ops is w else " (code route only)"
     kane, ours = w.get("ops_kane"), ops.get("ops_gacli")
     ratio = f"{ours / kane:.2f}" if kane and ours else "n/a"
-    cse_kane, cse_ours = ops.get("cse_kane"), ops.get("cse_gacli")
-    cse = f"{cse_ours:,} / {cse_kane:,} = {cse_ours / cse_kane:.2f}" if cse_kane and cse_ours else "n/a"
+    cse_kane, cse_ours = (_cse_cell(w, "cse_kane"), _cse_cell(ops, "cse_gacli"))
+    cse = f"{cse_ours} / {cse_kane}" + (f" = {ops['cse_gacli'] / w['cse_kane']:.2f}"
+                                        if ops.get("cse_gacli") and w.get("cse_kane") else "")
     check = result["check"]
     check_text = "timeout" if check.get("timeout") else str(check["rc"])
     if check.get("out_of_time"):
@@ -382,6 +384,12 @@ def row(result: dict) -> list[str]:
             _seconds(text), _seconds(result["derive_c"]), check_text,
             chars,
             f"{w['gacli_s']:.2f}" if "gacli_s" in w else "n/a", f"{w['kane_s']:.2f}" if "kane_s" in w else "n/a"]
+
+
+def _cse_cell(run: dict, key: str) -> str:
+    if key not in run:
+        return "timeout" if run.get("timeout") else "n/a"
+    return "too large" if run[key] is None else f"{run[key]:,}"
 
 
 HEADER = ["system", "k", "agree (max rel., 3 states)", "ops Kane", "ops gacli", "gacli/Kane",

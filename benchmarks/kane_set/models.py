@@ -257,8 +257,8 @@ def planar_chain() -> Reference:
     return Reference(KaneModel(kane, q, u, [], P), _named(q))
 
 
-def spatial_chain() -> Reference:
-    model = bench_kane.chain(3)
+def spatial_chain(links: int = 3) -> Reference:
+    model = bench_kane.chain(links)
     return Reference(model, _named(model.q))
 
 
@@ -350,6 +350,8 @@ SYSTEMS = {
     "four_bar": (HERE / "four_bar.yaml", four_bar, "four-bar linkage, two holonomic constraints"),
     "planar_chain": (HERE / "planar_chain.yaml", planar_chain, "3 rigid bars in a plane"),
     "spatial_chain": (HERE / "spatial_chain.yaml", spatial_chain, "3 rigid links, ball joints, XYZ angles"),
+    "spatial_chain6": (HERE / "spatial_chain6.yaml", lambda: spatial_chain(6),
+                       "6 rigid links, ball joints, XYZ angles (a spatial arm)"),
     "cart_pole": (HERE / "cart_pole.yaml", cart_pole, "cart and pole (format 1)"),
     "double_cart_pendulum": (HERE / "double_cart_pendulum.yaml", double_cart_pendulum,
                              "cart and two bars (frames)"),
