@@ -367,9 +367,9 @@ def row(result: dict) -> list[str]:
     note = "" if ops is w else " (code route only)"
     kane, ours = w.get("ops_kane"), ops.get("ops_gacli")
     ratio = f"{ours / kane:.2f}" if kane and ours else "n/a"
-    cse_kane, cse_ours = (_cse_cell(w, "cse_kane"), _cse_cell(ops, "cse_gacli"))
-    cse = f"{cse_ours} / {cse_kane}" + (f" = {ops['cse_gacli'] / w['cse_kane']:.2f}"
-                                        if ops.get("cse_gacli") and w.get("cse_kane") else "")
+    theirs = ops if "cse_kane" in ops else w
+    cse = f"{_cse_cell(ops, 'cse_gacli')} / {_cse_cell(theirs, 'cse_kane')}" + (
+        f" = {ops['cse_gacli'] / theirs['cse_kane']:.2f}" if ops.get("cse_gacli") and theirs.get("cse_kane") else "")
     check = result["check"]
     check_text = "timeout" if check.get("timeout") else str(check["rc"])
     if check.get("out_of_time"):
@@ -382,7 +382,7 @@ def row(result: dict) -> list[str]:
             f"{kane:,}" if kane else "n/a", (f"{ours:,}" if ours else "n/a") + note, ratio, cse,
             ops.get("route", "n/a"),
             _seconds(text), _seconds(result["derive_c"]), check_text,
-            chars,
+            chars, f"{text['chars'] / ours:.0f}" if text.get("rc") == 0 and ours and not text.get("too_large") else "n/a",
             f"{w['gacli_s']:.2f}" if "gacli_s" in w else "n/a", f"{w['kane_s']:.2f}" if "kane_s" in w else "n/a"]
 
 
@@ -394,8 +394,17 @@ def _cse_cell(run: dict, key: str) -> str:
 
 HEADER = ["system", "k", "agree (max rel., 3 states)", "ops Kane", "ops gacli", "gacli/Kane",
           "SymPy cse: gacli / Kane", "route",
-          "derive text [s CPU]", "derive C [s CPU]", "check exit", "text chars", "gacli API [s CPU]",
+          "derive text [s CPU]", "derive C [s CPU]", "check exit", "text chars", "chars/op", "gacli API [s CPU]",
           "Kane [s CPU]"]
+
+
+def print_table(info: dict, timeout: float, results: list[dict]) -> None:
+    from bench_report import markdown
+
+    print(f"# The Kane set: gacli against SymPy's KanesMethod (timeout {timeout:g} s CPU per process)\n")
+    print(f"machine: {info['platform']}, {info['cpu_count']} CPUs; Python {info['python']}, "
+          f"SymPy {info['sympy']}, gacli {info['gacli']}\n")
+    print(markdown(HEADER, [row(r) for r in results]))
 
 
 def parse(argv):
@@ -404,6 +413,7 @@ def parse(argv):
     parser.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per process (default 60)")
     parser.add_argument("--seed", type=int, default=20261126, help="the random states")
     parser.add_argument("--json", type=Path, help="also save every number here")
+    parser.add_argument("--from-json", type=Path, help="print the table of a saved run instead of running")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     parser.add_argument("--result", type=Path, help=argparse.SUPPRESS)
     parser.add_argument("--code-only", action="store_true", help=argparse.SUPPRESS)
@@ -415,7 +425,11 @@ def main(argv=None) -> int:
     if options.worker:
         worker(options.worker, options.result, options.code_only, options.seed)
         return 0
-    from bench_report import machine, markdown
+    if options.from_json:
+        saved = json.loads(options.from_json.read_text(encoding="utf-8"))
+        print_table(saved["machine"], saved["timeout"], saved["results"])
+        return 0
+    from bench_report import machine
     from models import SYSTEMS
 
     names = options.only.split(",") if options.only else list(SYSTEMS)
@@ -428,10 +442,7 @@ def main(argv=None) -> int:
         print(f"{name} ... ({time.perf_counter() - start:.0f} s so far)", file=sys.stderr, flush=True)
         results.append(measure(name, options))
     info = machine()
-    print(f"# The Kane set: gacli against SymPy's KanesMethod (timeout {options.timeout:g} s CPU per process)\n")
-    print(f"machine: {info['platform']}, {info['cpu_count']} CPUs; Python {info['python']}, "
-          f"SymPy {info['sympy']}, gacli {info['gacli']}\n")
-    print(markdown(HEADER, [row(r) for r in results]))
+    print_table(info, options.timeout, results)
     if options.json:
         options.json.write_text(json.dumps({"machine": info, "timeout": options.timeout, "results": results},
                                            indent=2, default=str), encoding="utf-8")
