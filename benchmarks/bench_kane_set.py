@@ -352,38 +352,53 @@ def _seconds(run: dict) -> str:
     return f"{run['cpu_s']:.2f}" + ("" if run.get("rc") == 0 else f" (exit {run.get('rc')})")
 
 
-def _agreement(w: dict) -> str:
+def _agreement(w: dict, code_only: dict | None) -> str:
     if "agreement" in w:
         worst = max(w["agreement"].values())
-        return f"{'ok' if worst <= TOLERANCE else 'FAIL'} {worst:.0e}"
-    if w.get("timeout"):
-        return f"timeout in {w['stage']}"
-    return f"error in {w['stage']}: {' '.join(w.get('error', []))[:60]}"
+        cell = f"{'ok' if worst <= TOLERANCE else 'FAIL'} {worst:.0e}"
+    elif w.get("timeout"):
+        cell = f"timeout in {w['stage']}"
+    else:
+        cell = f"error in {w['stage']}: {' '.join(w.get('error', []))[:60]}"
+    if code_only and "agreement" in code_only:
+        worst = max(code_only["agreement"].values())
+        cell += f"; code {'' if worst <= TOLERANCE else 'FAIL '}{worst:.0e}"
+    return cell
 
 
 def row(result: dict) -> list[str]:
     w = result["worker"]
+    # When the worker could not finish gacli's derivation, the code-only worker's numbers stand in.
     ops = w if "ops_gacli" in w else result.get("code_only", {})
-    note = "" if ops is w else " (code route only)"
     kane, ours = w.get("ops_kane"), ops.get("ops_gacli")
-    ratio = f"{ours / kane:.2f}" if kane and ours else "n/a"
-    theirs = ops if "cse_kane" in ops else w
-    cse = f"{_cse_cell(ops, 'cse_gacli')} / {_cse_cell(theirs, 'cse_kane')}" + (
-        f" = {ops['cse_gacli'] / theirs['cse_kane']:.2f}" if ops.get("cse_gacli") and theirs.get("cse_kane") else "")
-    check = result["check"]
-    check_text = "timeout" if check.get("timeout") else str(check["rc"])
-    if check.get("out_of_time"):
-        check_text += " (ran out of time)"
     text = result["derive_text"]
-    chars = f"{text['chars']:,}" + (" (too large to print)" if text.get("too_large") else "") \
-        if text.get("rc") == 0 else "n/a"
-    return [result["system"], str(ops.get("k", w.get("k", "?"))), _agreement(w) + ("" if not result.get("code_only")
-            or "agreement" not in result["code_only"] else f"; code {max(result['code_only']['agreement'].values()):.0e}"),
-            f"{kane:,}" if kane else "n/a", (f"{ours:,}" if ours else "n/a") + note, ratio, cse,
-            ops.get("route", "n/a"),
-            _seconds(text), _seconds(result["derive_c"]), check_text,
-            chars, f"{text['chars'] / ours:.0f}" if text.get("rc") == 0 and ours and not text.get("too_large") else "n/a",
+    printed = text.get("rc") == 0 and not text.get("too_large")
+    return [result["system"], str(ops.get("k", w.get("k", "?"))), _agreement(w, result.get("code_only")),
+            f"{kane:,}" if kane else "n/a",
+            (f"{ours:,}" if ours else "n/a") + ("" if ops is w else " (code route only)"),
+            f"{ours / kane:.2f}" if kane and ours else "n/a", _sympy_cse(w, ops), ops.get("route", "n/a"),
+            _seconds(text), _seconds(result["derive_c"]), _check(result["check"]), _chars(text),
+            f"{text['chars'] / ours:.0f}" if printed and ours else "n/a",
             f"{w['gacli_s']:.2f}" if "gacli_s" in w else "n/a", f"{w['kane_s']:.2f}" if "kane_s" in w else "n/a"]
+
+
+def _sympy_cse(w: dict, ops: dict) -> str:
+    theirs = ops if "cse_kane" in ops else w
+    cell = f"{_cse_cell(ops, 'cse_gacli')} / {_cse_cell(theirs, 'cse_kane')}"
+    if ops.get("cse_gacli") and theirs.get("cse_kane"):
+        cell += f" = {ops['cse_gacli'] / theirs['cse_kane']:.2f}"
+    return cell
+
+
+def _check(check: dict) -> str:
+    cell = "timeout" if check.get("timeout") else str(check["rc"])
+    return cell + (" (ran out of time)" if check.get("out_of_time") else "")
+
+
+def _chars(text: dict) -> str:
+    if text.get("rc") != 0:
+        return "n/a"
+    return f"{text['chars']:,}" + (" (too large to print)" if text.get("too_large") else "")
 
 
 def _cse_cell(run: dict, key: str) -> str:
