@@ -12,6 +12,7 @@ import numpy as np
 import sympy as sp
 
 from gacli.algebra import trig
+from gacli.algebra.blocks import block_triangular, solve_by_blocks
 
 # Ranks are decided at a random configuration (gacli.numeric.samples): a
 # generic rank of a matrix of functions equals its rank at almost every point.
@@ -38,7 +39,7 @@ def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
     if A.rows == 1:
         return B / A[0, 0]
     if A.rows > _ADJUGATE_MAX:
-        return A.LUsolve(B)
+        return _solve_large(A, B)
     minor = _minors(A)
     everything = tuple(range(A.rows))
     # Reduced by sin² + cos² = 1: a sleigh's determinant is sin(θ)² + cos(θ)², which is 1.
@@ -51,6 +52,21 @@ def solve_linear(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
         return trig.reduce(sp.Add(*terms)) / det
 
     return sp.Matrix(A.rows, B.cols, entry)
+
+
+def _solve_large(A: sp.Matrix, B: sp.Matrix) -> sp.Matrix:
+    """Too many rows for one adjugate: block after block (gacli.algebra.blocks), each by its adjugate.
+
+    SymPy's LU, the last resort for a block still too large, takes as pivot
+    the first entry not identically zero, which may vanish where A is regular.
+    """
+    rows = A.tolist()
+    blocks = block_triangular([[nonzero(e) for e in row] for row in rows])
+    if blocks is None or len(blocks) == 1:
+        return A.LUsolve(B)
+    solved = solve_by_blocks(blocks, lambda i, j: rows[i][j], B.tolist(),
+                             lambda a, b: solve_linear(sp.Matrix(a), sp.Matrix(b)).tolist())
+    return sp.Matrix(solved)
 
 
 def _without(indices: tuple[int, ...], i: int) -> tuple[int, ...]:
