@@ -132,9 +132,9 @@ def derive(
     format: Annotated[str, typer.Option(
         "--format", "-f", metavar="FORMAT", callback=choice("a format", formats),
         help=f"Output form: {', '.join(FORMATS)}.")] = "text",
-    output: Annotated[Optional[Path], typer.Option(
+    output: Annotated[Optional[str], typer.Option(
         "--output", "-o", metavar="PATH",
-        help="Write here instead of stdout (a directory for C: NAME.h and NAME.c).")] = None,
+        help="Write here instead of stdout: a file, or a directory when PATH ends in / or is one.")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
@@ -214,6 +214,9 @@ def check(
     timeout: Annotated[
         float, typer.Option("--timeout", min=0, metavar="SECONDS", help="Seconds allowed per file (0: no limit).")
     ] = 60.0,
+    skip_other_yaml: Annotated[bool, typer.Option(
+        "--skip-other-yaml", help="Skip named YAML files that are not gacli files (no 'gacli:' key), as in "
+        "folders and globs; the pre-commit hook names every YAML file.")] = False,
 ) -> None:
     """Check system files, as a gate in CI.
 
@@ -232,10 +235,11 @@ def check(
 
                 with console.progress("checking") as step:
                     report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
-                                         on_file=lambda p: step(str(p)))
+                                         on_file=lambda p: step(str(p)), skip_other_yaml=skip_other_yaml)
                 check_console.show(report)
             else:
-                report = check_paths(paths, timeout=timeout, strict=strict)
+                report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
+                                     skip_other_yaml=skip_other_yaml)
                 typer.echo(to_json(report) if format == "json" else to_github(report), nl=False)
         except PathsError as exc:
             raise typer.BadParameter(str(exc), param_hint="PATH") from None
@@ -275,7 +279,8 @@ def simulate(
     rtol: Annotated[float, typer.Option(metavar="NUMBER", help="Relative tolerance.")] = 1e-9,
     atol: Annotated[float, typer.Option(metavar="NUMBER", help="Absolute tolerance.")] = 1e-12,
     points: Annotated[int, typer.Option(metavar="N", help="Evenly spaced output samples.")] = 1001,
-    csv: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Write t and the state to this CSV file.")] = None,
+    csv: Annotated[Optional[str], typer.Option(
+        metavar="PATH", help="Write t and the state to this CSV file (into a directory: PATH/, as NAME.csv).")] = None,
     plot: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Draw to this .png or .svg file.")] = None,
     show: Annotated[Optional[str], typer.Option(metavar="STATE,...", help="States drawn against time, as x,y.")] = None,
     phase: Annotated[Optional[str], typer.Option(metavar="STATE,STATE", help="One state against another, as x,y.")] = None,
@@ -306,7 +311,7 @@ def simulate(
         if csv is not None:
             from gacli.output import write_files
 
-            for path in write_files({csv.name: sim.to_csv(result)}, csv):
+            for path in write_files({f"{result.system}.csv": sim.to_csv(result)}, csv):
                 simulate_console.wrote(path)
         if plot is not None:
             from gacli.simulate.plot import plot as draw
