@@ -76,6 +76,12 @@ def write_files(files: dict[str, Text], output: str | Path) -> list[Path]:
     return list(planned)
 
 
+def refuse_special(output: str | Path) -> None:
+    """Refuse, before any work, an output that exists and is neither a regular file nor a directory."""
+    if not is_directory_target(output):
+        _require_writable_kind(Path(output))
+
+
 def _require_writable_kind(path: Path) -> None:
     try:
         mode = path.stat().st_mode  # follows a link: a link to /dev/null is refused too
