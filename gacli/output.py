@@ -46,6 +46,7 @@ def is_directory_target(output: str | Path) -> bool:
 def targets(files: dict[str, Text], output: str | Path) -> dict[Path, Text]:
     """Where each generated file goes, by the rule in the module docstring."""
     path = Path(output)
+    refuse_special(output)
     if is_directory_target(output):
         if path.exists() and not path.is_dir():
             raise OutputError(f"{output}: not a directory (a trailing / asks for one)")
