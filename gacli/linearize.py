@@ -103,7 +103,7 @@ def _unevaluable(derivation: Derivation, point: Mapping[str, float], exc: Except
     """One located error: at the first load whose expressions fail at the point, else at the file."""
     from gacli.errors import Diagnostic, SystemFileError
 
-    where = ", ".join(f"{n} = {v:g}" for n, v in point.items())
+    where = ", ".join(f"{n} = {v:g}" if isinstance(v, float) else f"{n} = {v}" for n, v in point.items())
     reason = str(exc) or type(exc).__name__
     message = (f"linearize: the equations cannot be evaluated or differentiated at the operating point "
                f"{where} ({reason}); choose another with --at")
@@ -118,13 +118,21 @@ def _failing_place(derivation: Derivation, point: Mapping[str, float]):
     values = {S.value(c.name): v for c, v in ((c, point.get(c.name, 0.0)) for c in system.coordinates)}
     values.update({S.rate(n): point.get(f"dot({n})", 0.0) for n in system.rate_names})
     for load in (*system.forces, *system.torques):
-        try:
-            numbers = [complex(sp.N(e.xreplace(values), 15)) for e in load.vector]
-        except (ArithmeticError, ValueError, TypeError):
-            return load.location
-        if not all(np.isfinite(n) for n in numbers):
+        if not all(_finite(e.xreplace(values)) for e in load.vector):
             return load.location
     return system.location
+
+
+def _finite(value: sp.Expr) -> bool:
+    """False when ``value`` is undefined or infinite (symbols left in it, the parameters of --symbolic, aside)."""
+    if value.has(*_UNDEFINED):
+        return False
+    if value.free_symbols:
+        return True
+    try:
+        return bool(np.isfinite(complex(sp.N(value, 15))))
+    except (ArithmeticError, ValueError, TypeError):
+        return False
 
 
 def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
@@ -230,7 +238,13 @@ def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None 
              for name, sym in zip(lay.state + lay.r, lay.state_symbols + lay.r_symbols)}
     A = f.jacobian(list(lay.state_symbols)).xreplace(point)
     B = f.jacobian(list(lay.r_symbols)).xreplace(point) if lay.r else sp.zeros(len(lay.state), 0)
+    if any(entry.has(*_UNDEFINED) for entry in (*A, *B)):
+        shown = {name: point[sym] for name, sym in zip(lay.state + lay.r, lay.state_symbols + lay.r_symbols)}
+        raise _unevaluable(derivation, shown, ValueError("A or B is undefined there"))
     return A.applyfunc(sp.simplify), B.applyfunc(sp.simplify)
+
+
+_UNDEFINED = (sp.zoo, sp.nan, sp.oo, -sp.oo)
 
 
 def state_indices(names: Sequence[str], state: Sequence[str]) -> list[int]:
