@@ -44,14 +44,16 @@ NOT_REGULAR = "not a regular file (a device, socket or pipe); not read"
 class Found:
     """What the patterns name: the files to check, refusals of named files, and what was skipped."""
 
-    files: tuple[Path, ...]
+    files: tuple[Path, ...]                      # in the order found; the refused among them are not read
     refused: tuple[tuple[Path, str], ...] = ()   # named on the command line, but not to be read: an error each
     skipped: tuple[Skipped, ...] = ()            # found in a folder or glob (or not gacli YAML): counted, not errors
 
 
 def expand_paths(patterns: Iterable[str | Path]) -> list[Path]:
-    """The files :func:`find` would check (for callers that only want the list)."""
-    return list(find(patterns).files)
+    """The files :func:`find` would read (for callers that only want the list)."""
+    found = find(patterns)
+    refused = dict(found.refused)
+    return [p for p in found.files if p not in refused]
 
 
 def find(patterns: Iterable[str | Path], *, skip_other_yaml: bool = False) -> Found:
@@ -70,15 +72,14 @@ def find(patterns: Iterable[str | Path], *, skip_other_yaml: bool = False) -> Fo
             (empty if Path(pattern).is_dir() else missing).append(pattern)
         for path in candidates:
             why = _refusal(path, boundary) or (None if named and not skip_other_yaml else _not_gacli(path))
-            if why is None:
+            if why is None or (named and why != NOT_GACLI):
                 files[path] = None
-            elif named and why != NOT_GACLI:
-                refused[path] = why
+                if why is not None:
+                    refused[path] = why
             else:
                 skipped[path] = why
     _raise_for(missing, empty)
-    kept = [p for p in files if p not in refused]
-    return Found(tuple(kept), tuple(refused.items()),
+    return Found(tuple(files), tuple(refused.items()),
                  tuple(Skipped(str(p), why) for p, why in skipped.items() if p not in files))
 
 

@@ -206,7 +206,7 @@ def check_paths(
     found = find(patterns, skip_other_yaml=skip_other_yaml)
     refused = dict(found.refused)
     reports = []
-    for path in sorted({*found.files, *refused}, key=lambda p: p.parts) if refused else found.files:
+    for path in found.files:
         if on_file is not None:
             on_file(path)
         if path in refused:
