@@ -94,7 +94,7 @@ def _require_writable_kind(path: Path) -> None:
     except OSError as exc:
         raise _failure(path, exc) from None
     if stat.S_ISDIR(mode):
-        raise OutputError(f"{path}: is a directory; gacli writes a file of that name there")
+        raise OutputError(f"{path}: is a directory, where a generated file of that name would go")
     if not stat.S_ISREG(mode):
         raise OutputError(f"{path}: not a regular file (a device, pipe or socket); gacli writes only "
                           "regular files")
