@@ -16,6 +16,7 @@ import typer
 
 from gacli.version import __version__
 from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats
+from gacli.cli_options import usage_errors
 
 app = typer.Typer(
     name="gacli",
@@ -132,9 +133,9 @@ def derive(
     format: Annotated[str, typer.Option(
         "--format", "-f", metavar="FORMAT", callback=choice("a format", formats),
         help=f"Output form: {', '.join(FORMATS)}.")] = "text",
-    output: Annotated[Optional[Path], typer.Option(
+    output: Annotated[Optional[str], typer.Option(
         "--output", "-o", metavar="PATH",
-        help="Write here instead of stdout (a directory for C: NAME.h and NAME.c).")] = None,
+        help="Write here instead of stdout: a file, or a directory when PATH ends in / or is one.")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
@@ -214,6 +215,9 @@ def check(
     timeout: Annotated[
         float, typer.Option("--timeout", min=0, metavar="SECONDS", help="Seconds allowed per file (0: no limit).")
     ] = 60.0,
+    skip_other_yaml: Annotated[bool, typer.Option(
+        "--skip-other-yaml", help="Skip named YAML files that are not gacli files (no 'gacli:' key), as in "
+        "folders and globs; the pre-commit hook names every YAML file.")] = False,
 ) -> None:
     """Check system files, as a gate in CI.
 
@@ -232,10 +236,11 @@ def check(
 
                 with console.progress("checking") as step:
                     report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
-                                         on_file=lambda p: step(str(p)))
+                                         on_file=lambda p: step(str(p)), skip_other_yaml=skip_other_yaml)
                 check_console.show(report)
             else:
-                report = check_paths(paths, timeout=timeout, strict=strict)
+                report = check_paths(paths, timeout=timeout, strict=strict, verify=verify,
+                                     skip_other_yaml=skip_other_yaml)
                 typer.echo(to_json(report) if format == "json" else to_github(report), nl=False)
         except PathsError as exc:
             raise typer.BadParameter(str(exc), param_hint="PATH") from None
@@ -275,7 +280,8 @@ def simulate(
     rtol: Annotated[float, typer.Option(metavar="NUMBER", help="Relative tolerance.")] = 1e-9,
     atol: Annotated[float, typer.Option(metavar="NUMBER", help="Absolute tolerance.")] = 1e-12,
     points: Annotated[int, typer.Option(metavar="N", help="Evenly spaced output samples.")] = 1001,
-    csv: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Write t and the state to this CSV file.")] = None,
+    csv: Annotated[Optional[str], typer.Option(
+        metavar="PATH", help="Write t and the state to this CSV file (into a directory: PATH/, as NAME.csv).")] = None,
     plot: Annotated[Optional[Path], typer.Option(metavar="FILE", help="Draw to this .png or .svg file.")] = None,
     show: Annotated[Optional[str], typer.Option(metavar="STATE,...", help="States drawn against time, as x,y.")] = None,
     phase: Annotated[Optional[str], typer.Option(metavar="STATE,STATE", help="One state against another, as x,y.")] = None,
@@ -287,31 +293,21 @@ def simulate(
     residual of each constraint along the path; writes a CSV or a plot.
     """
     from gacli import simulate as sim
+    from gacli.cli_options import check_outputs, write_outputs
     from gacli.simulate import console as simulate_console
 
-    with _boundary():
+    with _boundary(), usage_errors():
         spec = sim.spec_from_options(set=set_ or (), init=init or (), input=input or (), function=function or (),
                                      show=show, phase=phase, t_end=t_end, method=method,
                                      rtol=rtol, atol=atol, points=points)
         sim.require("scipy.integrate")
-        if plot is not None:
-            from gacli.simulate.plot import check
-
-            check(plot)
-        with _budget(file, timeout) as state:
+        check_outputs(csv, plot)
+        with _budget(file, timeout) as state, simulate_console.notes_from_warnings():
             derivation = _derive(file, state)
             state("simulating")
             with simulate_console.progress(spec.t_end) as advance:
                 result = sim.simulate(derivation, spec, progress=advance)
-        if csv is not None:
-            from gacli.output import write_files
-
-            for path in write_files({csv.name: sim.to_csv(result)}, csv):
-                simulate_console.wrote(path)
-        if plot is not None:
-            from gacli.simulate.plot import plot as draw
-
-            simulate_console.wrote(draw(result, plot, spec.show, spec.phase))
+        write_outputs(result, spec, csv, plot)
         simulate_console.summary(result)
 
 
@@ -330,41 +326,29 @@ def linearize(
     """Linearize about an operating point.
 
     Prints A, B and the eigenvalues of A, numerically (or A and B
-    symbolically, with --symbolic).
+    symbolically, with --symbolic, at an --at of expressions in the parameters).
     """
     from gacli.display import console
     from gacli import linearize as L
+    from gacli.cli_options import numeric_lines, symbolic_lines
+    from gacli.simulate.console import notes_from_warnings
+    from gacli.simulate.spec import parse_assignments, state_names
 
-    with _boundary():
-        with _budget(file, timeout) as state:
+    with _boundary(), usage_errors():
+        pairs = parse_assignments(at or "", "--at")
+        overrides = parse_assignments(set_ or "", "--set")
+        names = state_names(states or "", "--states")
+        if symbolic and overrides:
+            raise typer.BadParameter("--symbolic keeps the parameters as symbols; leave out --set",
+                                     param_hint="--set")
+        with _budget(file, timeout) as state, notes_from_warnings():
             derivation = _derive(file, state)
             state("linearizing")
             if symbolic:
-                A, B = L.linearize_symbolic(derivation)
-                text = f"A = {A}\nB = {B}"
+                lines = symbolic_lines(L, derivation, pairs, names)
             else:
-                result = _linearize_numeric(L, derivation, at, set_)
-        if symbolic:
-            console.raw(text)
-            return
-        names = [n.strip() for n in states.split(",")] if states else list(result.state)
-        A = result.block(names)
-        lines = ["A ="] + L.format_matrix(A, names, names)
-        if result.inputs and not states:
-            lines += ["", "B ="] + L.format_matrix(result.B, result.state, result.inputs)
-        lines += ["", "eigenvalues:"] + [f"  {v.real:.10g} {'+' if v.imag >= 0 else '-'} {abs(v.imag):.10g}i"
-                                          for v in result.eigenvalues(names)]
+                lines = numeric_lines(L, derivation, pairs, overrides, names)
         console.raw("\n".join(lines))
-
-
-def _linearize_numeric(L, derivation, at: Optional[str], set_: Optional[str]):
-    from gacli.emit.naming import parameter_defaults
-    from gacli.simulate import parse_assignments
-
-    defaults = parameter_defaults(derivation.system.parameters)
-    overrides = L.evaluate_assignments(parse_assignments(set_ or "", "--set"), defaults, "--set")
-    point = L.evaluate_assignments(parse_assignments(at or "", "--at"), {**defaults, **overrides}, "--at")
-    return L.linearize(derivation, point, overrides)
 
 
 @app.command(**example("gacli verify systems/sphere_on_turntable.yaml --samples 5"))

@@ -16,9 +16,11 @@ symbolic form differentiates u̇ = M⁻¹F exactly, for small systems.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+import mpmath
 import numpy as np
 import sympy as sp
 
@@ -26,6 +28,10 @@ from gacli.mechanics.equations import Derivation
 from gacli.errors import GacliError
 
 _STEP = 1e-30
+# Central differences where the complex step cannot go (abs, sign): at 70 digits a step of
+# 1e-30 leaves rounding near 1e-40 and, at a kink, an error of the order of the step.
+_DIGITS = 70
+_CENTRAL_STEP_EXPONENT = 30
 
 
 class LinearizeError(GacliError, ValueError):
@@ -44,10 +50,7 @@ class Linearization:
 
     def block(self, names: Sequence[str]) -> np.ndarray:
         """The rows and columns of A for the named states, in that order."""
-        unknown = [n for n in names if n not in self.state]
-        if unknown:
-            raise LinearizeError(f"not in the state: {', '.join(unknown)} (the state is {', '.join(self.state)})")
-        idx = [self.state.index(n) for n in names]
+        idx = state_indices(names, self.state)
         return self.A[np.ix_(idx, idx)]
 
     def eigenvalues(self, names: Sequence[str] | None = None) -> np.ndarray:
@@ -62,26 +65,74 @@ def linearize(derivation: Derivation, at: Mapping[str, float] | None = None,
     """A and B at the operating point ``at`` (state and r names; others 0).
 
     Parameter values are the file's defaults, overridden by ``parameters``.
+
+    Raises:
+        OptionError: a name in ``at`` is neither a state nor an input (a usage error).
+        SystemFileError: the equations cannot be evaluated at the point, located at the
+            file (or the load) whose expressions fail there.
     """
     from gacli.emit.naming import layout
 
     lay = layout(derivation)
     values = _parameter_values(lay, parameters or {})
     point = dict(at or {})
+    _require_known(point, lay)
+    x0 = [float(point.get(n, 0.0)) for n in lay.state]
+    r0 = [float(point.get(n, 0.0)) for n in lay.r]
+    equations = _Equations.make(derivation, lay, values)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)  # numpy's overflow or 0/0 is a failure here, not a note
+            A = equations.jacobian(x0, r0, wrt="x")
+            B = equations.jacobian(x0, r0, wrt="r")
+    except (ArithmeticError, ValueError, TypeError, RuntimeWarning, np.linalg.LinAlgError) as exc:
+        raise _unevaluable(derivation, dict(zip(lay.state + lay.r, x0 + r0)), exc) from None
+    return Linearization(lay.state, lay.r, A, B, dict(zip(lay.state, x0)))
+
+
+def _require_known(point: Mapping[str, float], lay) -> None:
+    from gacli.simulate.spec import OptionError
+
     unknown = sorted(set(point) - set(lay.state) - set(lay.r))
     if unknown:
-        raise LinearizeError(f"not a state or input: {', '.join(unknown)} (the state is {', '.join(lay.state)})")
-    x0 = np.array([point.get(n, 0.0) for n in lay.state], dtype=complex)
-    r0 = np.array([point.get(n, 0.0) for n in lay.r], dtype=complex)
-    kinematic, mass, forcing = _numeric_functions(derivation, lay, values)
+        known = ", ".join(lay.state + lay.r)
+        raise OptionError([f"--at: not a state or input: {', '.join(unknown)} (the state and inputs are {known})"])
+
+
+def _unevaluable(derivation: Derivation, point: Mapping[str, float], exc: Exception):
+    """One located error: at the first load whose expressions fail at the point, else at the file."""
+    from gacli.errors import Diagnostic, SystemFileError
+
+    where = ", ".join(f"{n} = {v:g}" if isinstance(v, float) else f"{n} = {v}" for n, v in point.items())
+    reason = str(exc) or type(exc).__name__
+    message = (f"linearize: the equations cannot be evaluated or differentiated at the operating point "
+               f"{where} ({reason}); choose another with --at")
+    return SystemFileError([Diagnostic(_failing_place(derivation, point), message)])
+
+
+def _failing_place(derivation: Derivation, point: Mapping[str, float]):
+    """The location of the first force or torque that is not finite at the point; the file's otherwise."""
+    from gacli.algebra import symbols as S
+
+    system = derivation.system
+    values = {S.value(c.name): v for c, v in ((c, point.get(c.name, 0.0)) for c in system.coordinates)}
+    values.update({S.rate(n): point.get(f"dot({n})", 0.0) for n in system.rate_names})
+    for load in (*system.forces, *system.torques):
+        if not all(_finite(e.xreplace(values)) for e in load.vector):
+            return load.location
+    return system.location
+
+
+def _finite(value: sp.Expr) -> bool:
+    """False when ``value`` is undefined or infinite (symbols left in it, the parameters of --symbolic, aside)."""
+    if value.has(*_UNDEFINED):
+        return False
+    if value.free_symbols:
+        return True
     try:
-        A = _jacobian(kinematic, mass, forcing, x0, r0, wrt="x")
-        B = _jacobian(kinematic, mass, forcing, x0, r0, wrt="r")
-    except (ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
-        # e.g. sqrt(dot(x)**2 + dot(y)**2) of a nonlinear constraint, not differentiable where it vanishes
-        raise LinearizeError(f"the equations cannot be evaluated or differentiated at this operating point "
-                             f"({exc}); choose another with --at") from None
-    return Linearization(lay.state, lay.r, A, B, {**{n: float(v.real) for n, v in zip(lay.state, x0)}})
+        return bool(np.isfinite(complex(sp.N(value, 15))))
+    except (ArithmeticError, ValueError, TypeError):
+        return False
 
 
 def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
@@ -92,58 +143,82 @@ def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
     return values
 
 
-def _numeric_functions(derivation: Derivation, lay, values: Mapping[str, float]):
-    """Functions of (x, r) for q̇, M and F, the parameters put in.
+@dataclass(frozen=True)
+class _Equations:
+    """q̇, M and F as functions of the point (x, r), the parameters put in, and how to differentiate them.
 
     They run one compiled program over the distinct subexpressions
     (gacli.numeric), which stays small where the written-out trees are huge.
+    By the complex step where every function has a complex form; otherwise
+    (abs, sign: not analytic) by central differences in mpmath at 70 digits,
+    whose step 1e-30 leaves an error far below double rounding; at a kink
+    such as abs(0) this gives the mean of the one-sided slopes.
     """
-    from gacli.numeric import Program
 
-    fixed = {sym: complex(values[sym.name]) for sym in lay.parameter_symbols}
-    fixed[sp.Symbol("t", real=True)] = 0j
-    args = list(lay.state_symbols) + list(lay.r_symbols)
-    kin = [e for _, e in derivation.kinematic_equations]
-    n, k = len(kin), derivation.k
-    program = Program(kin + list(derivation.mass_matrix) + list(derivation.forcing))
-    cache: dict[tuple, list[complex]] = {}
+    program: object
+    arguments: tuple[sp.Symbol, ...]
+    fixed: dict
+    n: int
+    k: int
+    analytic: bool
 
-    def evaluate(point) -> list[complex]:
-        key = tuple(point)
-        if key not in cache:
-            cache.clear()
-            cache[key] = program({**fixed, **dict(zip(args, point))})
-        return cache[key]
+    @staticmethod
+    def make(derivation: Derivation, lay, values: Mapping[str, float]) -> "_Equations":
+        from gacli.numeric import Program
+        from gacli.numeric.evaluator import MPMATH
 
-    def kinematic(*point):
-        return np.array(evaluate(point)[:n])
+        kin = [e for _, e in derivation.kinematic_equations]
+        exprs = kin + list(derivation.mass_matrix) + list(derivation.forcing)
+        fixed = {sym: values[sym.name] for sym in lay.parameter_symbols}
+        fixed[sp.Symbol("t", real=True)] = 0.0
+        arguments = tuple(lay.state_symbols) + tuple(lay.r_symbols)
+        try:
+            return _Equations(Program(exprs), arguments, fixed, len(kin), derivation.k, True)
+        except TypeError:
+            return _Equations(Program(exprs, MPMATH), arguments, fixed, len(kin), derivation.k, False)
 
-    def mass(*point):
-        return np.array(evaluate(point)[n:n + k * k]).reshape(k, k)
+    def __call__(self, point) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        numbers = self.program({**self.fixed, **dict(zip(self.arguments, point))})
+        n, k = self.n, self.k
+        kind = complex if self.analytic else object
+        return (np.array(numbers[:n], dtype=kind), np.array(numbers[n:n + k * k], dtype=kind).reshape(k, k),
+                np.array(numbers[n + k * k:], dtype=kind))
 
-    def forcing(*point):
-        return np.array(evaluate(point)[n + k * k:])
+    def jacobian(self, x0: list[float], r0: list[float], wrt: str) -> np.ndarray:
+        n, m = len(x0), len(r0)
+        base = x0 + r0
+        columns = range(n) if wrt == "x" else range(n, n + m)
+        derivative = self._complex_step if self.analytic else self._central
+        _, M0, F0 = (np.real(np.asarray(a, dtype=complex)) for a in self._at(base))
+        u_dot = np.linalg.solve(M0, F0)
+        out = []
+        for j in columns:
+            dq, dM, dF = derivative(base, j)
+            out.append(np.concatenate([dq, np.linalg.solve(M0, dF - dM @ u_dot)]))
+        return np.array(out).T if out else np.zeros((n, 0))
 
-    return kinematic, mass, forcing
+    def _at(self, point):
+        if self.analytic:
+            return self([complex(v) for v in point])
+        with mpmath.workdps(_DIGITS):
+            return tuple(np.vectorize(float, otypes=[float])(a) if a.size else a.astype(float)
+                         for a in self([mpmath.mpf(v) for v in point]))
 
-
-def _jacobian(kinematic, mass, forcing, x0, r0, wrt: str) -> np.ndarray:
-    n, m = len(x0), len(r0)
-    base = np.concatenate([x0, r0])
-    M0 = np.array(mass(*base), dtype=complex).real
-    F0 = np.array(forcing(*base), dtype=complex).real.ravel()
-    u_dot = np.linalg.solve(M0, F0)
-    columns = range(n) if wrt == "x" else range(n, n + m)
-    out = []
-    for j in columns:
-        point = base.copy()
+    def _complex_step(self, base, j):
+        point = [complex(v) for v in base]
         point[j] += 1j * _STEP
-        dq = np.array(kinematic(*point), dtype=complex).imag.ravel() / _STEP
-        dM = np.array(mass(*point), dtype=complex).imag / _STEP
-        dF = np.array(forcing(*point), dtype=complex).imag.ravel() / _STEP
-        du = np.linalg.solve(M0, dF - dM @ u_dot)
-        out.append(np.concatenate([dq, du]))
-    return np.array(out).T if out else np.zeros((n, 0))
+        return tuple(np.asarray(a, dtype=complex).imag / _STEP for a in self(point))
+
+    def _central(self, base, j):
+        with mpmath.workdps(_DIGITS):
+            h = mpmath.mpf(10) ** -_CENTRAL_STEP_EXPONENT
+            up = [mpmath.mpf(v) for v in base]
+            down = list(up)
+            up[j] += h
+            down[j] -= h
+            pairs = zip(self(up), self(down))
+            return tuple(np.vectorize(lambda a, b: float((a - b) / (2 * h)), otypes=[float])(u, d)
+                         if u.size else u.astype(float) for u, d in pairs)
 
 
 def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None = None) -> tuple[sp.Matrix, sp.Matrix]:
@@ -163,7 +238,45 @@ def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None 
              for name, sym in zip(lay.state + lay.r, lay.state_symbols + lay.r_symbols)}
     A = f.jacobian(list(lay.state_symbols)).xreplace(point)
     B = f.jacobian(list(lay.r_symbols)).xreplace(point) if lay.r else sp.zeros(len(lay.state), 0)
+    if any(entry.has(*_UNDEFINED) for entry in (*A, *B)):
+        shown = {name: point[sym] for name, sym in zip(lay.state + lay.r, lay.state_symbols + lay.r_symbols)}
+        raise _unevaluable(derivation, shown, ValueError("A or B is undefined there"))
     return A.applyfunc(sp.simplify), B.applyfunc(sp.simplify)
+
+
+_UNDEFINED = (sp.zoo, sp.nan, sp.oo, -sp.oo)
+
+
+def state_indices(names: Sequence[str], state: Sequence[str]) -> list[int]:
+    """Where each named state is; a name unknown or given twice is an OptionError (--states)."""
+    from gacli.simulate.spec import OptionError
+
+    unknown = [n for n in names if n not in state]
+    if unknown:
+        raise OptionError([f"--states: not in the state: {', '.join(unknown)} (the state is {', '.join(state)})"])
+    twice = sorted({n for n in names if list(names).count(n) > 1})
+    if twice:
+        raise OptionError([f"--states: {', '.join(repr(n) for n in twice)} given twice"])
+    return [list(state).index(n) for n in names]
+
+
+def symbolic_point(derivation: Derivation, pairs) -> dict[str, sp.Expr]:
+    """An operating point of expressions in numbers and the parameters, kept as symbols (--symbolic --at)."""
+    from gacli.emit.naming import layout
+    from gacli.read.expr.build import BuildError, Scope, build
+    from gacli.read.expr.grammar import ParseError
+    from gacli.read.expr.parser import parse
+
+    lay = layout(derivation)
+    _require_known(dict(pairs), lay)
+    scope = Scope(values=dict(zip(lay.parameters, lay.parameter_symbols)))
+    out = {}
+    for name, text in pairs:
+        try:
+            out[name] = build(parse(text), scope)
+        except (ParseError, BuildError) as exc:
+            raise LinearizeError(f"--at {name}={text}: {exc.message}") from None
+    return out
 
 
 def _expression(value) -> sp.Expr:

@@ -1,14 +1,30 @@
-"""Write generated files atomically: a temporary file beside the target, then rename.
+"""Write generated files: where they go, and all of them or none.
 
-An existing file is replaced only when its new text is complete, so an error
-(or a crash) never leaves a half-written file.
+Where (one rule for every format and command, docs/generated-code.md): an
+``--output`` that ends in ``/`` or names an existing directory is a
+directory, and each generated file goes into it under its own name (the
+directory is made when missing); anything else is a file. A format that
+writes several files (C's ``.c`` and ``.h``, Octave's set) takes a file name
+only when it is one of them: its companions go beside it.
+
+How: only regular files are written. A path that exists as a device, a FIFO
+or a socket is refused before anything is written (``--output /dev/null``,
+run as root, would otherwise replace the device). Every file is written to a
+temporary file beside its target first; only when all are complete are they
+renamed over their targets, and a rename that fails puts back what the earlier
+ones replaced. A failure of the file system (a read-only directory, a parent
+that is a file, ``/proc``, a full disk) is one :class:`OutputError` naming
+the path, never a traceback, and leaves every existing file as it was.
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import shutil
+import stat
 import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 
 from gacli.errors import GacliError
@@ -18,34 +34,161 @@ class OutputError(GacliError):
     """The output path cannot receive the generated files."""
 
 
-def targets(files: dict[str, str | bytes], output: Path) -> dict[Path, str | bytes]:
-    """Where each generated file goes: into ``output`` when it is a directory
-    (or several files are generated), else ``output`` itself."""
-    if output.is_dir() or len(files) > 1:
-        if output.exists() and not output.is_dir():
-            raise OutputError(f"{output}: expected a directory for {len(files)} files ({', '.join(sorted(files))})")
-        return {output / name: text for name, text in sorted(files.items())}
-    (text,) = files.values()
-    return {output: text}
+Text = str | bytes
 
 
-def write_files(files: dict[str, str | bytes], output: Path) -> list[Path]:
-    """Write every file atomically; returns the paths written."""
+def is_directory_target(output: str | Path) -> bool:
+    """A trailing separator, or an existing directory (a link to one counts)."""
+    text = os.fspath(output)
+    return text.endswith(("/", os.sep)) or Path(text).is_dir()
+
+
+def targets(files: dict[str, Text], output: str | Path) -> dict[Path, Text]:
+    """Where each generated file goes, by the rule in the module docstring."""
+    path = Path(output)
+    refuse_special(output)
+    if is_directory_target(output):
+        if path.exists() and not path.is_dir():
+            raise OutputError(f"{output}: not a directory (a trailing / asks for one)")
+        return {path / name: text for name, text in sorted(files.items())}
+    if len(files) == 1:
+        (text,) = files.values()
+        return {path: text}
+    if path.name in files:
+        return {path.parent / name: text for name, text in sorted(files.items())}
+    names = ", ".join(sorted(files))
+    raise OutputError(f"{output}: this format writes {len(files)} files ({names}); give a directory "
+                      f"(a trailing / makes one: {output}/) or the name of one of them")
+
+
+def write_files(files: dict[str, Text], output: str | Path) -> list[Path]:
+    """Write every file, all or none; returns the paths written.
+
+    Raises:
+        OutputError: the output is not a regular file or directory, or the file system failed.
+    """
     planned = targets(files, output)
     for path in planned:
-        if not path.parent.exists():
-            path.parent.mkdir(parents=True, exist_ok=True)
-    for path, text in planned.items():
-        _write_atomic(path, text)
+        _require_writable_kind(path)
+    directories = sorted({path.parent for path in planned}, key=lambda p: p.parts)
+    for directory in directories:
+        _make_directory(directory)
+    _commit(planned)
     return list(planned)
 
 
-def _write_atomic(path: Path, text: str | bytes) -> None:
-    with atomic_path(path) as tmp:
-        if isinstance(text, bytes):  # a zip (the FMU): written as it is
-            tmp.write_bytes(text)
+def refuse_special(output: str | Path) -> None:
+    """Refuse, before any work, an output that exists and is neither a regular file nor a directory."""
+    if not is_directory_target(output):
+        _require_writable_kind(Path(output))
+
+
+def _require_writable_kind(path: Path) -> None:
+    try:
+        mode = path.stat().st_mode  # follows a link: a link to /dev/null is refused too
+    except FileNotFoundError:
+        return
+    except NotADirectoryError:
+        parent = next(p for p in reversed(path.parents) if p.exists() and not p.is_dir())
+        raise OutputError(f"{path}: cannot write: {parent} is a file, not a directory") from None
+    except OSError as exc:
+        raise _failure(path, exc) from None
+    if stat.S_ISDIR(mode):
+        raise OutputError(f"{path}: is a directory, where a generated file of that name would go")
+    if not stat.S_ISREG(mode):
+        raise OutputError(f"{path}: not a regular file (a device, pipe or socket); gacli writes only "
+                          "regular files")
+
+
+def _make_directory(directory: Path) -> None:
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise _failure(directory, exc, "cannot make the directory") from None
+
+
+def _failure(path: Path, exc: OSError, what: str = "cannot write") -> OutputError:
+    # The target, never the temporary beside it that the system names.
+    return OutputError(f"{path}: {what}: {exc.strerror or type(exc).__name__}")
+
+
+# -- all or none -------------------------------------------------------------------
+
+@dataclass
+class _Staged:
+    target: Path
+    temporary: Path
+    backup: Path | None = None     # the replaced file, kept until every rename has succeeded
+    renamed: bool = False
+
+
+def _commit(planned: dict[Path, Text]) -> None:
+    staged: list[_Staged] = []
+    current = next(iter(planned))
+    try:
+        for current, text in planned.items():
+            staged.append(_Staged(current, _temporary(current)))
+            _write(staged[-1].temporary, text, _mode_for(current))
+        for item in staged:
+            current = item.target
+            item.backup = _backup(item.target)
+            os.replace(item.temporary, item.target)
+            item.renamed = True
+    except OSError as exc:
+        _roll_back(staged)
+        changed = "" if len(planned) == 1 else " (no file was changed)"
+        raise _failure(current, exc, f"cannot write{changed}") from None
+    except BaseException:
+        _roll_back(staged)
+        raise
+    for item in staged:
+        if item.backup is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(item.backup)
+
+
+def _temporary(path: Path) -> Path:
+    fd, name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    return Path(name)
+
+
+def _write(temporary: Path, text: Text, mode: int) -> None:
+    if isinstance(text, bytes):  # a zip (the FMU): written as it is
+        temporary.write_bytes(text)
+    else:
+        temporary.write_text(text, encoding="utf-8", newline="\n")
+    os.chmod(temporary, mode)
+
+
+def _backup(target: Path) -> Path | None:
+    """A second name for the file about to be replaced (a hard link; a copy where links fail)."""
+    if not target.exists():
+        return None
+    backup = _temporary(target)
+    os.unlink(backup)
+    try:
+        os.link(target, backup)
+    except OSError:
+        shutil.copy2(target, backup)
+    return backup
+
+
+def _roll_back(staged: list[_Staged]) -> None:
+    """Put back every replaced file, remove every new one and every temporary."""
+    for item in reversed(staged):
+        if item.renamed:
+            _quietly(os.replace, item.backup, item.target) if item.backup else _quietly(os.unlink, item.target)
         else:
-            tmp.write_text(text, encoding="utf-8", newline="\n")
+            _quietly(os.unlink, item.temporary)
+            if item.backup is not None:
+                _quietly(os.unlink, item.backup)
+
+
+def _quietly(operation, *paths: Path) -> None:
+    # Rolling back after a failure: one that fails too must not hide the first.
+    with contextlib.suppress(OSError):
+        operation(*paths)
 
 
 @contextlib.contextmanager
@@ -53,14 +196,22 @@ def atomic_path(path: Path):
     """A temporary path beside ``path`` to write; renamed over ``path`` only if the block succeeds.
 
     The file gets the mode an ordinary new file would (or the replaced
-    file's), not mkstemp's private 0600.
+    file's), not mkstemp's private 0600. File-system failures become one
+    OutputError naming the path.
     """
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix or ".tmp", dir=path.parent)
-    os.close(fd)
+    _require_writable_kind(path)
     try:
-        yield Path(tmp)
+        tmp = _temporary(path)
+    except OSError as exc:
+        raise _failure(path, exc) from None
+    try:
+        yield tmp
         os.chmod(tmp, _mode_for(path))
         os.replace(tmp, path)
+    except OSError as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise _failure(path, exc) from None
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)

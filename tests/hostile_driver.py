@@ -7,6 +7,11 @@ what the command printed, its exit code, its time, which files it left in
 the output folder and whether the injection marker appeared.
 
     python tests/hostile_driver.py WORKDIR FILE...
+    python tests/hostile_driver.py --output-target=PATH [--budget=SECONDS] WORKDIR FILE...
+
+With ``--output-target``, the commands are those that write (derive in every
+format, simulate's CSV), each told to write to PATH (a device, a FIFO, a
+path under a file: tests/test_hostile_output.py).
 """
 
 from __future__ import annotations
@@ -43,6 +48,13 @@ def commands() -> dict[str, list[str]]:
     return out
 
 
+def output_commands(target: str) -> dict[str, list[str]]:
+    """Every command that writes a file, told to write to ``target``."""
+    out = {f"derive-{fmt}": ["derive", "--format", fmt, "--output", target] for fmt in sorted(EMITTERS)}
+    out["simulate-csv"] = ["simulate", *SIMULATE, "--csv", target]
+    return out
+
+
 def peak_mib() -> float:
     """This process's peak resident memory, in MiB.
 
@@ -59,15 +71,15 @@ def peak_mib() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-def run_case(name: str, command: list[str], path: Path, work: Path) -> dict:
+def run_case(name: str, command: list[str], path: Path, work: Path, budget: str = BUDGET) -> dict:
     out = work / "out" / path.stem / name
     out.mkdir(parents=True)
     marker = work / "MARKER"
     args = [part.format(out=out) for part in command]
     if command[0] != "check":
-        args += ["--timeout", BUDGET]
+        args += ["--timeout", budget]
     else:
-        args[1:1] = ["--timeout", BUDGET]
+        args[1:1] = ["--timeout", budget]
     clear_cache()  # each case as a fresh `gacli` process meets it, not warmed (or bloated) by the others
     start = time.perf_counter()
     result = CliRunner().invoke(app, [*args, str(path)])
@@ -80,8 +92,15 @@ def run_case(name: str, command: list[str], path: Path, work: Path) -> dict:
 
 
 def main(argv: list[str]) -> None:
+    chosen, budget = commands(), BUDGET
+    while argv and argv[0].startswith("--"):
+        option, _, value = argv.pop(0).partition("=")
+        if option == "--output-target":
+            chosen = output_commands(value)
+        elif option == "--budget":  # a valid system, whose derivation is not what is tested
+            budget = value
     work, files = Path(argv[0]), [Path(a) for a in argv[1:]]
-    records = [run_case(name, command, path, work) for path in files for name, command in commands().items()]
+    records = [run_case(name, command, path, work, budget) for path in files for name, command in chosen.items()]
     json.dump({"records": records, "peak_mib": peak_mib()}, sys.stdout)
 
 

@@ -106,8 +106,9 @@ def mixed(tmp_path) -> tuple[Path, set[str]]:
     bad = {
         write(tmp_path, "c_bad.yaml", GOOD.replace("mass: m", "mass: mass")),
         write(tmp_path, "sub/d_bad.yml", GOOD.replace("gacli: 1", "gacli: 7")),
-        write(tmp_path, "sub/deeper/e_bad.yaml", "- not\n- a mapping\n"),
+        write(tmp_path, "sub/deeper/e_bad.yaml", GOOD + "extra: 1\n"),
     }
+    write(tmp_path, "sub/workflow.yml", "name: ci\non: push\n")  # not a gacli file: skipped, counted
     write(tmp_path, ".hidden/f_bad.yaml", "- skipped: hidden folders are not searched\n")
     write(tmp_path, "notes.txt", "not YAML at all")
     return tmp_path, {str(p) for p in bad}
@@ -121,7 +122,9 @@ def test_json_reports_exactly_the_bad_files(mixed):
     assert report["exit_code"] == 1
     assert {f["path"] for f in report["files"] if f["failed"]} == bad
     assert len(report["files"]) == 5
-    assert report["summary"] == {"files": 5, "failed": 3, "errors": 3, "warnings": 0, "notes": 0}
+    assert report["summary"] == {"files": 5, "failed": 3, "errors": 3, "warnings": 0, "notes": 0, "skipped": 1}
+    assert report["skipped"] == [{"path": str(folder / "sub" / "workflow.yml"),
+                                  "reason": "not a gacli file (no top-level 'gacli:' key)"}]
     for file in report["files"]:
         for d in file["diagnostics"]:
             assert d["line"] >= 1 and d["column"] >= 1 and d["path"] == file["path"]
@@ -131,7 +134,8 @@ def test_github_reports_exactly_the_bad_files(mixed):
     folder, bad = mixed
     result = invoke("--format", "github", str(folder))
     assert result.exit_code == 1, result.output
-    lines = result.stdout.splitlines()
+    *lines, skipped = result.stdout.splitlines()
+    assert skipped == "::notice title=gacli check::skipped 1 file (not a gacli file: 1)"
     assert all(re.match(r"::(error|warning) file=[^,]+,line=\d+,col=\d+,title=gacli check::.+", line)
                for line in lines), lines
     assert {re.match(r"::error file=([^,]+),", line)[1] for line in lines} == bad
@@ -321,7 +325,7 @@ def test_printable_escapes_control_characters():
 
 def test_check_paths_reports_in_order(tmp_path):
     b = write(tmp_path, "b.yaml", GOOD)
-    a = write(tmp_path, "a.yaml", "[")
+    a = write(tmp_path, "a.yaml", "gacli: 1\n[")
     report = check_paths([tmp_path], timeout=30)
     assert [f.path for f in report.files] == [str(a), str(b)]
     assert report.exit_code == 1 and report.failed == (report.files[0],)
@@ -338,7 +342,7 @@ def test_help_does_not_import_sympy():
 def test_the_pre_commit_hook():
     hooks = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text(encoding="utf-8"))
     hook = next(h for h in hooks if h["id"] == "gacli-check")
-    assert hook["entry"] == "gacli check"
+    assert hook["entry"] == "gacli check --skip-other-yaml"  # it is handed every YAML file
     assert re.search(hook["files"], "systems/top.yaml") and re.search(hook["files"], "a.yml")
     assert not re.search(hook["files"], "notes.txt")
 
@@ -433,9 +437,9 @@ def test_the_rolling_sphere_is_non_holonomic_in_the_json_report(tmp_path):
 
 
 def test_an_unknown_structure_is_undecided_with_a_note_that_never_fails(tmp_path):
-    # q_y in no rotation: the body turns by other means, so nothing says what d(dq_y) is.
-    text = (SPHERE_ON_A_FIXED_PLANE.replace(", inertia: [I, I, I], rotation: [ROTATION]", "")
-            .replace(", 'dy + a*dq_x = 0'", "").replace("[M, a, I]", "[M, a]"))
+    # q_y in no rotation: the body turns by other means, so nothing says what d(dq_y) is. The body
+    # turns by q_x, x and q_z, so that M has no zero row (check's error for a rate that moves nothing).
+    text = (SPHERE_ON_A_FIXED_PLANE.replace("ROTATION", "dq_x, dx, dq_z").replace(", 'dy + a*dq_x = 0'", ""))
     path = write(tmp_path, "unknown.yaml", text)
     result = invoke("--strict", "--format", "json", str(path))
     report = json.loads(result.stdout)["files"][0]

@@ -204,7 +204,7 @@ def test_readme_main_compiles_and_runs(tmp_path):
     main = (ROOT / "docs" / "sphere_main.c").read_text()
     assert main.strip() in (ROOT / "README.md").read_text()
     result = CliRunner().invoke(app, ["derive", str(ROOT / "systems" / "sphere_on_turntable.yaml"),
-                                      "--format", "c", "--output", str(tmp_path / "build")])
+                                      "--format", "c", "--output", f"{tmp_path}/build/"])
     assert result.exit_code == 0, result.output
     (tmp_path / "main.c").write_text(main)
     subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-Ibuild", "main.c",

@@ -57,4 +57,4 @@ def test_linearize_command():
     assert result.exit_code == 0, result.output
     assert "-16.35" in result.output and "eigenvalues:" in result.output
     bad = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--states", "lean"])
-    assert bad.exit_code == 1 and "not in the state: lean" in bad.output
+    assert bad.exit_code == 2 and "not in the state: lean" in bad.output

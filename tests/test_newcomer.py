@@ -102,7 +102,7 @@ AT_REST = "F_x=0,F_y=0,F_z=0,M_x=0,M_y=0,M_z=0"
 def test_several_problems_are_several_lines_not_a_literal_backslash_n():
     pytest.importorskip("scipy")
     result = invoke("simulate", SPHERE, "--input", AT_REST, "--function", "Om=2", "--t-end", "0.1")
-    assert result.exit_code == 1
+    assert result.exit_code == 2  # an unknown name is a usage error (issue 33)
     assert "\\n" not in result.stderr, result.stderr
     lines = result.stderr.splitlines()
     assert lines[0] == "error: 2 problems with the simulation:", result.stderr
@@ -117,7 +117,7 @@ def test_a_wrong_state_name_suggests_the_one_meant(written, meant):
     pytest.importorskip("scipy")
     result = invoke("simulate", SPHERE, "--input", AT_REST, "--function", "Omega=2", "--init", f"{written}=0.1",
                     "--t-end", "0.1")
-    assert result.exit_code == 1
+    assert result.exit_code == 2  # an unknown name is a usage error (issue 33)
     assert f"(did you mean '{meant}'?)" in result.stderr, result.stderr
 
 

@@ -17,8 +17,10 @@ in :mod:`~gacli.check.report`; the rich table in :mod:`~gacli.check.console`.
 
 from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.check.declarations import unused_declarations
-from gacli.check.paths import SUFFIXES, expand_paths
-from gacli.check.report import JSON_VERSION, CheckReport, FileReport, MassMatrixCheck, PathsError, to_github, to_json
+from gacli.check.paths import SUFFIXES, Found, expand_paths, find
+from gacli.check.report import (
+    JSON_VERSION, CheckReport, FileReport, MassMatrixCheck, PathsError, Skipped, to_github, to_json,
+)
 from gacli.check.run import (
     DEFAULT_TIMEOUT,
     MAX_DIAGNOSTICS,
@@ -31,6 +33,6 @@ from gacli.check.run import (
 
 __all__ = [
     "DEFAULT_TIMEOUT", "JSON_VERSION", "MAX_DIAGNOSTICS", "STEP_CLASSIFY", "STEP_LOAD", "STEP_MASS", "STEP_READ",
-    "STEP_VERIFY", "SUFFIXES", "CheckReport", "FileReport", "MassMatrixCheck", "PathsError", "check_file",
-    "check_paths", "expand_paths", "to_github", "to_json", "unused_declarations",
+    "STEP_VERIFY", "SUFFIXES", "CheckReport", "FileReport", "Found", "MassMatrixCheck", "PathsError", "Skipped",
+    "check_file", "check_paths", "expand_paths", "find", "to_github", "to_json", "unused_declarations",
 ]

@@ -13,7 +13,7 @@ from rich.table import Table
 from rich.text import Text
 
 from gacli.display import console
-from gacli.check.report import CheckReport, FileReport
+from gacli.check.report import CheckReport, FileReport, skipped_summary
 from gacli.display.console import printable
 from gacli.display.report import rank_note
 
@@ -24,6 +24,9 @@ def show(report: CheckReport) -> None:
     """Diagnostics (stderr), then one table row per file and a summary line (stdout)."""
     for file in report.files:
         console.diagnostics(file.diagnostics)  # escapes and shortens what the file wrote
+    for skipped in report.skipped:
+        if skipped.kind != "not a gacli file":  # a link a pull request added is worth a line of its own
+            console.note(f"{skipped.path}: note: skipped, {skipped.reason}")
     out = console.stdout()
     out.print(_table(report, out.width), soft_wrap=False)  # a table is laid out to the width, not run on
     out.print(_summary(report))
@@ -112,4 +115,6 @@ def _summary(report: CheckReport) -> Text:
         text.append(f"all {_count(total, 'file')} passed", style="bold green")
     if report.strict:
         text.append(" (--strict: warnings fail)")
+    if report.skipped:
+        text.append(f"; {skipped_summary(report.skipped)}")
     return text

@@ -31,9 +31,32 @@ def unused_declarations(system: System) -> list[Diagnostic]:
                                   f"inputs.{i.name}", severity="note"))
     for c in system.coordinates:
         if c.name not in bodies:
-            out.append(_warning(c.location, f"coordinates.{c.name}",
-                                f"no body depends on coordinate '{c.name}' (it is in no position or rotation)"))
+            out.append(_warning(c.location, f"coordinates.{c.name}", _moves_nothing(system, c.name)))
     return out
+
+
+def _moves_nothing(system: System, name: str) -> str:
+    """What is true of a coordinate that no body's position or rotation depends on.
+
+    It may still turn a frame: the last spin of a pendulum's rod about the rod,
+    which carries only a particle (no rotation of its own) and points on the axis.
+    """
+    turned = _frames_turned_by(system, name)
+    if not turned:
+        return f"no body depends on coordinate '{name}' (it is in no position or rotation)"
+    frames = ", ".join(f"'{f}'" for f in turned)
+    return (f"coordinate '{name}' turns frame{'s' if len(turned) > 1 else ''} {frames}, but no body's position "
+            f"or rotation depends on it (a particle has no rotation; a point on the axis does not move): "
+            f"its equation is 0 = 0")
+
+
+def _frames_turned_by(system: System, name: str) -> list[str]:
+    if system.frames is None:
+        return []
+    symbol = S.value(name)
+    # A chain's inner links are named frame#0, frame#1 ...: the frame is the name before '#'.
+    found = [edge.name.split("#")[0] for edge in system.frames.edges if symbol in edge.angle.free_symbols]
+    return list(dict.fromkeys(found))
 
 
 def _warning(location: Location, where: str, message: str) -> Diagnostic:

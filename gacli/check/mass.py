@@ -32,11 +32,26 @@ def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
         findings.error("the equations contain the imaginary unit I: M, F and the kinematic equations must be real",
                        "equations", location=where)
     symmetric = _symmetric(M, findings, where)
+    _zero_rows(derivation, findings)
     values, missing = parameter_values(system)
     if missing:
         note = f"not checked: no value for {', '.join(missing)}"
         return MassMatrixCheck(symmetric, None, 0, note)
     return _positive_definite(system, M, values, symmetric, findings, where)
+
+
+def _zero_rows(derivation: Derivation, findings) -> None:
+    """A row of M that is zero at every state: whatever the parameters, M is singular there and the
+    rate's equation reads 0 = 0 (a coordinate that turns only a particle, say), so nothing can be solved."""
+    M, system = derivation.mass_matrix, derivation.system
+    coordinates = {c.name: c.location for c in system.coordinates}
+    for i, name in enumerate(derivation.independent):
+        if all(M[i, j] == 0 for j in range(M.cols)):
+            rate = f"dot({name})"
+            findings.error(f"M is singular at every state: its row for {rate} is zero, so the equation of "
+                           f"{rate} reads 0 = 0 (no body's kinetic energy depends on {rate})", "mass_matrix",
+                           "give the body that this rate turns an inertia, or remove the coordinate",
+                           location=coordinates.get(name, system.location))
 
 
 def _symmetric(M: sp.ImmutableMatrix, findings, where: Location) -> bool | None:

@@ -68,9 +68,30 @@ class FileReport:
 
 
 @dataclass(frozen=True)
+class Skipped:
+    """A file found in a folder or glob and left out: not gacli YAML, or a link that leaves or loops."""
+
+    path: str
+    reason: str
+
+    @property
+    def kind(self) -> str:
+        """The reason in a few words, for the count in the summary."""
+        for start, kind in _KINDS:
+            if self.reason.startswith(start):
+                return kind
+        return self.reason
+
+
+_KINDS = (("not a gacli file", "not a gacli file"), ("a symbolic link that leads out", "a link out of its folder"),
+          ("a symbolic link loop", "a link loop"), ("not a regular file", "not a regular file"))
+
+
+@dataclass(frozen=True)
 class CheckReport:
     files: tuple[FileReport, ...]
     strict: bool = False
+    skipped: tuple[Skipped, ...] = ()
 
     @property
     def failed(self) -> tuple[FileReport, ...]:
@@ -91,11 +112,25 @@ def to_json(report: CheckReport) -> str:
         "files": len(report.files), "failed": len(report.failed),
         "errors": sum(len(f.errors) for f in report.files),
         "warnings": sum(len(f.warnings) for f in report.files),
-        "notes": sum(len(f.notes) for f in report.files),
+        "notes": sum(len(f.notes) for f in report.files), "skipped": len(report.skipped),
     }
     data = {"version": JSON_VERSION, "strict": report.strict, "exit_code": report.exit_code,
-            "summary": summary, "files": files}
-    return json.dumps(data, sort_keys=True, indent=2) + "\n"
+            "summary": summary, "files": files,
+            "skipped": [{"path": s.path, "reason": s.reason} for s in report.skipped]}
+    return json.dumps(_strict_text(data), sort_keys=True, indent=2) + "\n"
+
+
+def _strict_text(value):
+    """Every string as valid Unicode: a file name that is not UTF-8 reaches Python as lone
+    surrogates (os.fsdecode), which json.dumps writes as ``\\udc80``, an escape strict readers
+    (jq) refuse. Such a character is written as the text ``\\udc80`` instead, as printable() shows it."""
+    if isinstance(value, str):
+        return value.encode("utf-8", "backslashreplace").decode("utf-8")
+    if isinstance(value, dict):
+        return {_strict_text(k): _strict_text(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_strict_text(v) for v in value]
+    return value
 
 
 def _file_json(report: FileReport, strict: bool) -> dict:
@@ -126,7 +161,12 @@ def _diagnostic_json(d: Diagnostic) -> dict:
 
 
 def to_github(report: CheckReport) -> str:
-    """GitHub Actions workflow commands: one ``::error`` / ``::warning`` / ``::notice`` line per diagnostic."""
+    """GitHub Actions workflow commands: one ``::error`` / ``::warning`` / ``::notice`` line per diagnostic.
+
+    Escaped as GitHub's runner unescapes them (actions/toolkit, command.ts): in the
+    message ``%``, CR and LF; in a property also ``:`` and ``,``, so that a file
+    name cannot end its own ``file=`` or start another command.
+    """
     lines = []
     for file in report.files:
         for d in file.diagnostics:
@@ -135,12 +175,31 @@ def to_github(report: CheckReport) -> str:
             where = f"{d.where}: " if d.where else ""
             hint = f" ({d.hint})" if d.hint else ""
             lines.append(f"::{level} {properties},title=gacli check::{_gh_data(where + d.message + hint)}")
+    if report.skipped:
+        lines.append(f"::notice title=gacli check::{_gh_data(skipped_summary(report.skipped))}")
     return "".join(line + "\n" for line in lines)
 
 
+def skipped_summary(skipped: tuple[Skipped, ...]) -> str:
+    """``skipped 3 files (not a gacli file: 2, a link out of its folder: 1)``."""
+    kinds: dict[str, int] = {}
+    for s in skipped:
+        kinds[s.kind] = kinds.get(s.kind, 0) + 1
+    count = len(skipped)
+    return f"skipped {count} file{'' if count == 1 else 's'} (" + ", ".join(
+        f"{kind}: {n}" for kind, n in sorted(kinds.items())) + ")"
+
+
+def _escape(text: str) -> str:
+    # GitHub's escapes first (a line break in a message is one in the annotation), then
+    # every other control character shown as an escape, as in the terminal.
+    return printable(text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
+
+
 def _gh_data(text: str) -> str:
-    return printable(shortened(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
+    return _escape(shortened(text))
 
 
 def _gh_property(text: str) -> str:
-    return _gh_data(text).replace(":", "%3A").replace(",", "%2C")
+    # Never shortened: the file property is the annotation's location, whole or not at all.
+    return _escape(_strict_text(text)).replace(":", "%3A").replace(",", "%2C")

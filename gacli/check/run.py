@@ -27,7 +27,7 @@ from gacli.budget import STEP_LOAD, STEP_READ, forget_frames  # one name for eac
 from gacli.check.declarations import unused_declarations
 from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
-from gacli.check.paths import expand_paths
+from gacli.check.paths import find
 from gacli.check.report import CheckReport, FileReport, MassMatrixCheck
 from gacli.mechanics.equations import derive
 from gacli.errors import (
@@ -195,11 +195,22 @@ def check_paths(
     patterns: Iterable[str | Path], *, timeout: float | None = DEFAULT_TIMEOUT, strict: bool = False,
     verify: bool = False,
     on_file: Callable[[Path], None] | None = None,
+    skip_other_yaml: bool = False,
 ) -> CheckReport:
-    """Expand the patterns (PathsError if one matches nothing) and check every file."""
+    """Expand the patterns (PathsError if one matches nothing) and check every file.
+
+    A named file that is not to be read (a link out of its boundary,
+    gacli.check.paths) is an error in its report, never opened; what a folder
+    or glob turned up and was left out is listed in ``skipped``.
+    """
+    found = find(patterns, skip_other_yaml=skip_other_yaml)
+    refused = dict(found.refused)
     reports = []
-    for path in expand_paths(patterns):
+    for path in found.files:
         if on_file is not None:
             on_file(path)
-        reports.append(check_file(path, timeout=timeout, verify=verify))
-    return CheckReport(tuple(reports), strict)
+        if path in refused:
+            reports.append(FileReport(str(path), (Diagnostic(Location(str(path), 1, 1), refused[path]),)))
+        else:
+            reports.append(check_file(path, timeout=timeout, verify=verify))
+    return CheckReport(tuple(reports), strict, found.skipped)

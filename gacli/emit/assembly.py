@@ -15,7 +15,8 @@ rest of the array with zeros in one step.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import re
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
@@ -86,12 +87,39 @@ def assemble(derivation: Derivation, names: dict, printer_class, parts: Sequence
     keyed = [(part, equations(derivation, part)) for part in parts]
     flat = [(name, expr) for _, group in keyed for _, name, expr in group]
     block, printer = print_block(printer_class, names, flat, prefix=prefix, graphs=derivation.code.shared)
+    block = live_block(block, names)
     slots, start = {}, 0
     for part, group in keyed:
         codes = block.results[start:start + len(group)]
         slots[part] = tuple((slot, code) for (slot, _, _), code in zip(group, codes))
         start += len(group)
     return Assembly(block, slots, derivation.k), printer
+
+
+_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def live_block(block: Block, names: Mapping[sp.Symbol, str]) -> Block:
+    """The block without the temporaries that no result needs, found by reachability from the results.
+
+    After CSE a temporary can be dead: terms that cancel when the reduced
+    expressions are rebuilt (``_c2**2 - _c1**2`` with ``_c2 = -_c1``) take
+    their uses with them, and C's ``-Werror=unused-variable`` refuses the
+    declaration. Read on the printed code, so it holds for every target and
+    whatever CSE ran. A symbol that only a dead temporary read is dropped from
+    ``symbols`` too, so that its entry of x, p or r is not unpacked.
+    """
+    needed = {token for code in block.results for token in _TOKEN.findall(code)}
+    kept = []
+    for name, code in reversed(block.temporaries):
+        if name in needed:
+            kept.append((name, code))
+            needed.update(_TOKEN.findall(code))
+    if len(kept) == len(block.temporaries):
+        return block
+    dead = {token for name, code in block.temporaries if name not in needed for token in _TOKEN.findall(code)}
+    symbols = frozenset(s for s in block.symbols if names.get(s, s.name) in needed or names.get(s, s.name) not in dead)
+    return Block(tuple(reversed(kept)), block.results, symbols)
 
 
 def equations(derivation: Derivation, part: str) -> list[tuple[object, str, sp.Expr]]:

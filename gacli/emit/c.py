@@ -27,7 +27,7 @@ from string import Template
 
 import sympy as sp
 
-from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
+from gacli.emit.assembly import Assembly, assemble, live_block, reaction_equations, reaction_solve
 from gacli.emit.naming import Entry, Layout, header_lines, layout
 from gacli.emit.printers import GacliCPrinter, print_block
 from gacli.mechanics.equations import Derivation
@@ -352,7 +352,7 @@ def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Asse
 def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Assembly:
     block, printer = print_block(GacliCPrinter, lay.identifiers, equations)
     printer.includes()
-    return Assembly(block, {}, lay.k)
+    return Assembly(live_block(block, lay.identifiers), {}, lay.k)  # the reactions' route too
 
 
 def _function(lay: Layout, function: str, locals_: list[str], code: Assembly, assignments: list[str]) -> str:

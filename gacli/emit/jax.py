@@ -23,6 +23,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from string import Template
 
+import sympy as sp
+
 from gacli.emit.assembly import Assembly, assemble, refuse_reactions
 from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import GacliJaxPrinter
@@ -108,8 +110,19 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
     return _function("rhs", lay, code, lines)
 
 
+class _JaxLiterals(GacliJaxPrinter):
+    """Integers past int32 print as floats: JAX's default 32-bit mode takes a Python int as
+    an int32, and one beyond 2**31 raises OverflowError under jax.jit."""
+
+    def _print_Integer(self, expr: sp.Integer) -> str:
+        return self._wide_literal(expr) if abs(int(expr)) >= INT32_LIMIT else super()._print_Integer(expr)
+
+
+INT32_LIMIT = 2**31
+
+
 def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Assembly:
-    code, printer = assemble(derivation, lay.identifiers, GacliJaxPrinter, parts)
+    code, printer = assemble(derivation, lay.identifiers, _JaxLiterals, parts)
     printer.imports()  # raises if the code would need more than jax.numpy
     return code
 

@@ -26,7 +26,7 @@ from string import Template
 
 import sympy as sp
 
-from gacli.emit.assembly import Assembly, assemble, reaction_equations, reaction_solve
+from gacli.emit.assembly import Assembly, assemble, live_block, reaction_equations, reaction_solve
 from gacli.emit.naming import Layout, header_lines, layout, mass_arguments
 from gacli.emit.printers import Block, GacliPythonPrinter, print_block
 from gacli.mechanics.equations import Derivation
@@ -209,7 +209,7 @@ def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Asse
 def _block(lay: Layout, equations: list[tuple[str, sp.Expr]]) -> Block:
     block, printer = print_block(GacliPythonPrinter, lay.identifiers, equations)
     printer.imports()  # raises if the code would need more than math and numpy
-    return block
+    return live_block(block, lay.identifiers)  # the reactions' route too
 
 
 def _prologue(lay: Layout, block: Block) -> list[str]:

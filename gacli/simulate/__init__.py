@@ -41,17 +41,19 @@ from gacli.simulate.spec import (
     INSTALL,
     METHODS,
     MissingExtraError,
+    OptionError,
     SimulationError,
     SimulationSpec,
     parse_assignments,
     require,
     spec_from_options,
     split_top_level,
+    state_names,
 )
 
 __all__ = [
     "DEFAULT_ATOL", "DEFAULT_METHOD", "DEFAULT_POINTS", "DEFAULT_RTOL", "DEFAULT_T_END", "INSTALL", "METHODS",
-    "ConstraintResidual", "MissingExtraError", "Simulation", "SimulationError", "SimulationSpec",
+    "ConstraintResidual", "MissingExtraError", "OptionError", "Simulation", "SimulationError", "SimulationSpec",
     "conservation_problems", "energy_expressions", "load_generated", "parse_assignments", "path_rates", "require",
-    "simulate", "spec_from_options", "split_top_level", "summary_lines", "to_csv",
+    "simulate", "spec_from_options", "split_top_level", "state_names", "summary_lines", "to_csv",
 ]

@@ -19,7 +19,7 @@ from gacli.mechanics.equations import Derivation
 from gacli.numeric.compiled import scalar, vectorized
 from gacli.simulate.energy import conservation_problems, energy_expressions, path_rates
 from gacli.simulate.results import ConstraintResidual, Simulation, short
-from gacli.simulate.spec import SimulationError, SimulationSpec, require
+from gacli.simulate.spec import OptionError, SimulationError, SimulationSpec, require
 from gacli.simulate.values import OptionValues
 
 _PROGRESS_STEPS = 200        # progress reports per run, at most
@@ -183,7 +183,7 @@ class _Problem:
         inputs = values.inputs(spec.inputs)
         r_exprs = values.r_entries(tuple(module.INPUTS), inputs, functions)
         if values.problems:
-            raise SimulationError(values.problems)
+            raise (OptionError if values.usage else SimulationError)(values.problems)
         r = ()
         if r_exprs:
             arguments = _arguments(values.state, values.parameter_names)

@@ -18,6 +18,9 @@ DEFAULT_POINTS = 1001
 INSTALL = "pip install 'gacli[sim]'"
 
 MAX_FUNCTION_ORDER = 8      # rates of a free function that generated code may ask for
+# Output samples: the path, energy and residuals are arrays of points x entries (docs/simulate.md).
+MAX_POINTS = 1_000_000
+MAX_VALUES = 10_000_000     # points x state entries: 80 MB a copy of the path
 
 Assignments = tuple[tuple[str, str], ...]
 
@@ -33,6 +36,12 @@ class SimulationError(GacliError, ValueError):
             return self.problems[0]
         lines = [f"{len(self.problems)} problems with the simulation:"]
         return "\n".join(lines + [f"  {p}" for p in self.problems])
+
+
+class OptionError(SimulationError):
+    """An option string that cannot be used as written: a malformed piece, a name given
+    twice or unknown, options that conflict. A usage error (exit code 2), found before
+    any integration."""
 
 
 class MissingExtraError(GacliError, ImportError):
@@ -77,10 +86,14 @@ def spec_from_options(*, set: Sequence[str] = (), init: Sequence[str] = (), inpu
     def joined(texts, option):
         return tuple(pair for text in texts for pair in parse_assignments(text, option))
 
+    points = numbers.get("points", DEFAULT_POINTS)
+    if points > MAX_POINTS:
+        raise OptionError([f"--points: at most {MAX_POINTS:,} output samples, found {points:,} "
+                           "(the integrator's own steps do not depend on it)"])
     return SimulationSpec(
         parameters=joined(set, "--set"), initial=joined(init, "--init"),
         inputs=joined(input, "--input"), functions=joined(function, "--function"),
-        show=tuple(split_top_level(show or "", "--show")), phase=tuple(split_top_level(phase or "", "--phase")),
+        show=tuple(state_names(show or "", "--show")), phase=tuple(state_names(phase or "", "--phase")),
         **numbers,
     )
 
@@ -95,18 +108,21 @@ def split_top_level(text: str, option: str = "") -> list[str]:
     for i, char in enumerate(text):
         depth += {"(": 1, ")": -1}.get(char, 0)
         if depth < 0:
-            raise SimulationError([f"{option} '{text}': unmatched ')' at column {i + 1}".lstrip()])
+            raise OptionError([f"{option} '{text}': unmatched ')' at column {i + 1}".lstrip()])
         if char == "," and depth == 0:
             pieces.append(text[start:i])
             start = i + 1
     if depth:
-        raise SimulationError([f"{option} '{text}': unclosed '('".lstrip()])
+        raise OptionError([f"{option} '{text}': unclosed '('".lstrip()])
     pieces.append(text[start:])
     return [p.strip() for p in pieces if p.strip()]
 
 
 def parse_assignments(text: str, option: str = "") -> list[tuple[str, str]]:
     """``"a=1,b=f(1,2)"`` → ``[("a", "1"), ("b", "f(1,2)")]``; commas inside parentheses stay.
+
+    Names are written as gacli writes them (``dot( x )`` is ``dot(x)``); a name given
+    twice is an OptionError, as is a piece that is not name=value.
 
     >>> parse_assignments("x=1, dot(x)=-2*a")
     [('x', '1'), ('dot(x)', '-2*a')]
@@ -115,6 +131,35 @@ def parse_assignments(text: str, option: str = "") -> list[tuple[str, str]]:
     for piece in split_top_level(text, option):
         name, equals, value = piece.partition("=")
         if not equals or not name.strip() or not value.strip():
-            raise SimulationError([f"{option} '{piece}': expected name=value".lstrip()])
-        out.append((name.strip(), value.strip()))
+            raise OptionError([f"{option} '{piece}': expected name=value".lstrip()])
+        out.append((canonical_name(name), value.strip()))
+    _refuse_twice([n for n, _ in out], option)
     return out
+
+
+def state_names(text: str, option: str = "") -> list[str]:
+    """``"x, dot( y )"`` → ``["x", "dot(y)"]``; a name given twice is an OptionError."""
+    names = [canonical_name(n) for n in split_top_level(text, option)]
+    _refuse_twice(names, option)
+    return names
+
+
+def canonical_name(text: str) -> str:
+    """A name or rate as gacli writes it (``dot( x )`` → ``dot(x)``); other text stripped, as given."""
+    from gacli.algebra import symbols as S
+    from gacli.read.expr.grammar import Name, ParseError, Rate
+    from gacli.read.expr.parser import parse
+
+    try:
+        node = parse(text.strip())
+    except ParseError:
+        return text.strip()
+    if isinstance(node, Rate):
+        return S.rate_name(node.name, node.order)
+    return node.id if isinstance(node, Name) else text.strip()
+
+
+def _refuse_twice(names: Sequence[str], option: str) -> None:
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise OptionError([f"{option}: {', '.join(repr(n) for n in twice)} given twice".lstrip()])

@@ -14,7 +14,7 @@ from gacli.mechanics.equations import Derivation
 from gacli.read.expr.build import BuildError, Scope, build
 from gacli.read.expr.grammar import Name, ParseError, Rate
 from gacli.read.expr.parser import parse
-from gacli.simulate.spec import MAX_FUNCTION_ORDER, METHODS, Assignments, SimulationSpec
+from gacli.simulate.spec import MAX_FUNCTION_ORDER, MAX_VALUES, METHODS, Assignments, SimulationSpec
 from gacli.simulate.suggest import closest_state
 
 
@@ -27,24 +27,32 @@ class OptionValues:
         self.state = state
         self.parameter_names = tuple(p.name for p in self.system.parameters)
         self.problems: list[str] = []
+        self.usage: list[str] = []  # those that make it a usage error (exit 2): a name unknown, twice, a conflict
+
+    def _refuse(self, problem: str) -> None:
+        self.problems.append(problem)
+        self.usage.append(problem)
 
     # -- checks of the plain options
     def check_numbers(self, spec: SimulationSpec) -> None:
         if spec.method not in METHODS:
-            self.problems.append(f"--method: '{spec.method}' is not a method of solve_ivp "
+            self._refuse(f"--method: '{spec.method}' is not a method of solve_ivp "
                                  f"(one of: {', '.join(METHODS)})")
         for option, value in (("--t-end", spec.t_end), ("--rtol", spec.rtol), ("--atol", spec.atol)):
             if not (math.isfinite(value) and value > 0):
-                self.problems.append(f"{option}: expected a positive number, found {value!r}")
+                self._refuse(f"{option}: expected a positive number, found {value!r}")
         if spec.points < 2:
-            self.problems.append(f"--points: expected at least 2, found {spec.points}")
+            self._refuse(f"--points: expected at least 2, found {spec.points}")
+        elif spec.points * len(self.state) > MAX_VALUES:
+            self._refuse(f"--points: {spec.points:,} samples of {len(self.state)} state entries exceed "
+                         f"{MAX_VALUES:,} values; at most {MAX_VALUES // len(self.state):,} samples for this system")
 
     def check_plot_names(self, spec: SimulationSpec) -> None:
         for option, names in (("--show", spec.show), ("--phase", spec.phase)):
             for name in names:
                 self._state_name(option, name)
         if spec.phase and len(spec.phase) != 2:
-            self.problems.append(f"--phase: expected two state names (x,y), found {len(spec.phase)}")
+            self._refuse(f"--phase: expected two state names (x,y), found {len(spec.phase)}")
 
     # -- parameters
     def parameters(self, assignments: Assignments) -> tuple[float, ...]:
@@ -113,7 +121,7 @@ class OptionValues:
         seen = set()
         for name, text in self._unique("--function", assignments):
             if name in given:
-                self.problems.append(f"--function {name}: '{name}' has a value in the system file, "
+                self._refuse(f"--function {name}: '{name}' has a value in the system file, "
                                      "already substituted in the equations")
                 continue
             if not self._known("--function", name, free, "a free function of time"):
@@ -183,7 +191,7 @@ class OptionValues:
         out = []
         for name, text in assignments:
             if name in seen:
-                self.problems.append(f"{option}: '{name}' is given twice")
+                self._refuse(f"{option}: '{name}' is given twice")
                 continue
             seen.add(name)
             out.append((name, text))
@@ -201,7 +209,7 @@ class OptionValues:
         close = close or difflib.get_close_matches(name, list(allowed), n=1, cutoff=0.6)
         hint = f" (did you mean '{close[0]}'?)" if close else ""
         listing = f"; the system has: {', '.join(allowed)}" if allowed and not close else ""
-        self.problems.append(f"{option} {name}: '{name}' is not {what} of {self.system.name}{hint}{listing}")
+        self._refuse(f"{option} {name}: '{name}' is not {what} of {self.system.name}{hint}{listing}")
         return False
 
     def _missing(self, kind: str, names: list[str], option: str, what: str) -> None:
@@ -219,11 +227,11 @@ class OptionValues:
             node = None
         name = S.rate_name(node.name, node.order) if isinstance(node, Rate) else getattr(node, "id", None)
         if not isinstance(node, (Name, Rate)):
-            self.problems.append(f"{option} '{text}': expected a state name such as x or dot(x)")
+            self._refuse(f"{option} '{text}': expected a state name such as x or dot(x)")
             return None
         if name in self.state:
             return name
-        self.problems.append(f"{option} {name}: '{name}' is not in the state{self._why_not(node)}; "
+        self._refuse(f"{option} {name}: '{name}' is not in the state{self._why_not(node)}; "
                              f"the state is {', '.join(self.state)}")
         return None
 

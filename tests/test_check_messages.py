@@ -1,0 +1,55 @@
+"""Messages that say what is true of the file (issue 33, item 7).
+
+A spherical pendulum written with frames, whose last angle spins the rod
+about itself: the bob is a particle on the rod's axis, so nothing moves with
+q3. It is in the frame's rotation sequence (the old message said it was in
+no rotation), and M's row for its rate is zero at every state, so ``check``
+fails it whether or not the parameters have values.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from gacli.cli import app
+
+PENDULUM = """\
+gacli: 1
+name: spherical
+parameters:
+  m: {value: VALUE}
+  l: {value: VALUE}
+  g: {value: VALUE}
+coordinates: [q1, q2, q3]
+frames:
+  rod: {rotations: [[z, q1], [x, q2], [z, q3]]}
+points:
+  bob: {rod: [0, 0, -l]}
+bodies:
+  ball: {mass: m, position: bob}
+potential: -m*g*l*cos(q2)
+"""
+
+
+@pytest.mark.parametrize("values", [True, False], ids=["with-values", "without-values"])
+def test_a_coordinate_that_turns_only_a_particle_is_named_truly_and_fails(tmp_path: Path, values: bool):
+    text = PENDULUM.replace("VALUE", "1") if values else PENDULUM.replace(": {value: VALUE}", ": {}")
+    path = tmp_path / "spherical.yaml"
+    path.write_text(text, encoding="utf-8")
+    line, column = 7, text.splitlines()[6].index("q3") + 1
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:{line}:{column}: error: mass_matrix: M is singular at every state: its row for dot(q3) " \
+           "is zero" in result.stderr
+    assert "coordinate 'q3' turns frame 'rod', but no body's position or rotation depends on it" in result.stderr
+    assert "it is in no position or rotation" not in result.stderr
+
+
+def test_a_coordinate_in_nothing_keeps_its_message(tmp_path: Path):
+    path = tmp_path / "idle.yaml"
+    path.write_text(PENDULUM.replace("VALUE", "1").replace("[q1, q2, q3]", "[q1, q2, q3, s]"), encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert "no body depends on coordinate 's' (it is in no position or rotation)" in result.stderr
