@@ -37,13 +37,22 @@ CODE_FORMATS = code_formats()
 # a test checks the two agree.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
-SystemPath = Annotated[Path, typer.Argument(metavar="FILE", help="A system file (YAML).", dir_okay=False, exists=True)]
+SystemPath = Annotated[Path, typer.Argument(
+    metavar="FILE", help="A system file (YAML), or - for standard input.", dir_okay=False, allow_dash=True,
+    callback=lambda value: _existing(value))]
 # The same budget as gacli check's --timeout (gacli.budget); the literals are
 # here so that --help does not import SymPy. A test checks they agree.
 DEFAULT_TIMEOUT = 300.0
 Timeout = Annotated[float, typer.Option(
     "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command, past which it stops with "
     "'ran out of time in the step ...' (0: no limit).")]
+
+
+def _existing(path: Path) -> Path:
+    """The file argument: ``-`` (standard input) or a path that exists, else a usage error (exit 2)."""
+    if str(path) != "-" and not path.exists():
+        raise typer.BadParameter(f"File '{path}' does not exist.")
+    return path
 
 
 @contextlib.contextmanager
@@ -86,30 +95,16 @@ def _budget(path: Path, seconds: float):
 
 
 def _derive(path: Path, state, for_code: bool = False):
-    """Read, load and derive within the budget, telling it (and the spinner) each step.
-
-    ``for_code``: a system whose code is its straight-line program alone (gacli.mechanics.code)
-    is derived by that, loaded without the rolling rows only the closed forms need.
-    """
+    """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step."""
     from gacli.display import console
-    from gacli.budget import STEP_LOAD, STEP_READ
-    from gacli.mechanics.code import derive_for_code
-    from gacli.mechanics.equations import derive
-    from gacli.loader.loading import load_source
-    from gacli.read.source import read_source
+    from gacli.pipeline import run
 
-    state(STEP_READ)
-    source = read_source(path)
-    state(STEP_LOAD)
-    if for_code and (program := derive_for_code(load_source(source, rolling_rows=False))) is not None:
-        return program
-    system = load_source(source)
     with console.progress(f"deriving {path.name}") as spinner:
         def step(name: str) -> None:
             state(name)
             spinner(name)
 
-        return derive(system, progress=step)
+        return run(path, for_code=for_code, progress=step).derivation
 
 
 def _version(value: bool) -> None:

@@ -29,7 +29,7 @@ from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
 from gacli.check.paths import find
 from gacli.check.report import CheckReport, FileReport, MassMatrixCheck
-from gacli.mechanics.equations import derive
+from gacli.pipeline import run as run_pipeline
 from gacli.errors import (
     DerivationError,
     Diagnostic,
@@ -37,9 +37,7 @@ from gacli.errors import (
     Location,
     SystemFileError,
 )
-from gacli.loader.loading import load_source
 from gacli.display.report import dependent_rows
-from gacli.read.source import read_source
 from gacli.numeric.zero import time_limit
 
 DEFAULT_TIMEOUT = 60.0
@@ -115,11 +113,9 @@ STEP_VERIFY = "verifying by the independent route (eq. 14.10)"
 def _check(path: Path, findings: _Findings, verify: bool = False) -> None:
     findings(STEP_READ)
     _require_regular_file(path)
-    source = read_source(path)
-    findings(STEP_LOAD)
-    system = load_source(source)
-    findings.diagnostics.extend(unused_declarations(system))
-    derivation = derive(system, progress=findings)
+    run = run_pipeline(path, progress=findings,
+                       loaded=lambda system: findings.diagnostics.extend(unused_declarations(system)))
+    system, derivation = run.system, run.derivation
     findings.k, findings.independent = derivation.k, derivation.independent
     findings.dependent = dependent_rows(derivation)
     findings(STEP_CLASSIFY)

@@ -9,7 +9,8 @@ cannot name an input. All problems are collected and raised together as one
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass, field
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import sympy as sp
@@ -59,20 +60,42 @@ def load_source(source: SourceFile, *, rolling_rows: bool = True) -> System:
     of a bicycle's loading: the straight-line program (gacli.mechanics.program) forms its
     own from the frame model, and every declaration is still read and checked. Such a
     System has ``rolling_rows`` False, and the chapter's steps refuse it."""
+    system, complete = load_in_stages(source)
+    return complete() if rolling_rows else system
+
+
+def load_in_stages(source: SourceFile) -> tuple[System, Callable[[], System]]:
+    """The System without its rolling rows, and a function that adds them to it.
+
+    The file is read and every declaration checked once, in the first stage;
+    the second forms only the rolling rows, from the same builder, so that a
+    command that may not need them (generated code by the program) loads the
+    file once either way. Both stages raise located SystemFileErrors.
+    """
     decl, diagnostics = read_declarations(source)
     if diagnostics or decl is None:
         raise SystemFileError(diagnostics)
-    builder = _Builder(decl, rolling_rows=rolling_rows)
+    builder = _Builder(decl, rolling_rows=False)
+    system = _guarded(source, builder.system)
+    done: list[System] = []
+
+    def complete() -> System:
+        if not done:
+            done.append(_guarded(source, lambda: builder.with_rolling_rows(system)))
+        return done[0]
+
+    return system, complete
+
+
+def _guarded(source: SourceFile, stage: Callable[[], System]) -> System:
     try:
-        system = builder.system()
+        system = stage()
     except (RecursionError, OverflowError) as exc:
         # A frame turned by 1e300*delta made SymPy recurse without end in a rolling row:
         # one located message, as every other problem of the file, not a traceback.
         why = "an expression nests too deeply" if isinstance(exc, RecursionError) else "a number is too large"
         raise SystemFileError([Diagnostic(Location(source.path, 1, 1),
                                           f"the file cannot be loaded: {why} to evaluate ({type(exc).__name__})")])
-    if builder.diagnostics:
-        raise SystemFileError(sorted(builder.diagnostics, key=lambda d: d.location))
     return system
 
 
@@ -114,6 +137,22 @@ class _Builder(Forms, Geometry, RollingContacts):
         return None
 
     def system(self) -> System:
+        system = self._system()
+        if self.diagnostics:
+            raise SystemFileError(sorted(self.diagnostics, key=lambda d: d.location))
+        return system
+
+    def with_rolling_rows(self, system: System) -> System:
+        """``system`` (this builder's, loaded without them) with its rolling rows, as one load forms them."""
+        if system.rolling_rows:
+            return system
+        self.rolling_rows = True
+        rolling = self._rolling_constraints(system.bodies)
+        if self.diagnostics:
+            raise SystemFileError(sorted(self.diagnostics, key=lambda d: d.location))
+        return replace(system, constraints=system.constraints + rolling, rolling_rows=True)
+
+    def _system(self) -> System:
         self._check_names()
         parameters = self._parameters()
         functions = self._functions(parameters)

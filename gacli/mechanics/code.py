@@ -24,6 +24,7 @@ with :mod:`gacli.algebra.graph`, never as trees.
 from __future__ import annotations
 
 import functools
+import weakref
 from dataclasses import dataclass
 
 import sympy as sp
@@ -149,10 +150,26 @@ def derive_for_code(system: System) -> ProgramDerivation | None:
 
 def program_for(system: System) -> Program | None:
     """The system's program; None without a frame model, outside what the builder takes, or
-    when it fails: the chapter's route, hardened against every file, then says what is wrong."""
+    when it fails: the chapter's route, hardened against every file, then says what is wrong.
+
+    Built once per load: a System and the same System with its rolling rows added
+    (gacli.loader.loading.load_in_stages) share their frame model and bodies, and the
+    program reads the rows it needs from the frame model, so both have the same program.
+    """
     if system.frames is None:
         return None
+    key = id(system.frames)
+    hit = _PROGRAMS.get(key)
+    if hit is not None and hit[0] is system.bodies and hit[1] == system.independent:
+        return hit[2]
     try:
-        return build_program(system)
+        program = build_program(system)
     except Exception:  # noqa: BLE001 - see above
-        return None
+        program = None
+    _PROGRAMS[key] = (system.bodies, system.independent, program)
+    weakref.finalize(system.frames, _PROGRAMS.pop, key, None)
+    return program
+
+
+# id(frame model) → (its System's bodies, independent, program): forgotten with the frame model.
+_PROGRAMS: dict[int, tuple] = {}

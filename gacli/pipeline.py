@@ -1,0 +1,73 @@
+"""One route from a system file to its equations, for every command and the API (issue #28).
+
+file (or standard input) → :class:`SourceFile` → ``System`` → equations, each
+step once: the file is read once and loaded once (the rolling rows, which
+only the chapter's closed forms need, are added to the same load when they
+are needed, :func:`gacli.loader.loading.load_in_stages`), and the equations
+are built once. ``gacli derive``, ``gacli check``, ``gacli gibbs``,
+``gacli verify`` and the other commands call :func:`run`; each reports the
+steps to its budget through ``progress``.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from gacli.budget import STEP_LOAD, STEP_READ
+from gacli.loader.loading import load_in_stages
+from gacli.mechanics.code import ProgramDerivation, derive_for_code
+from gacli.mechanics.equations import Derivation, derive
+from gacli.model import System
+from gacli.read.source import MAX_FILE_BYTES, SourceFile, parse_source, read_source
+
+STDIN = "-"
+STDIN_NAME = "<stdin>"
+
+
+@dataclass(frozen=True)
+class Run:
+    """What one command built from one file: its source, its System, its equations."""
+
+    source: SourceFile
+    system: System
+    derivation: Derivation | ProgramDerivation
+
+
+def read(path: str | Path) -> SourceFile:
+    """The source of a system file, or of standard input for ``-`` (read up to the same size limit)."""
+    if str(path) == STDIN:
+        data = sys.stdin.buffer.read(MAX_FILE_BYTES + 1)
+        return parse_source(data, STDIN_NAME)
+    return read_source(path)
+
+
+def run(path: str | Path, *, for_code: bool = False, progress: Callable[[str], None] | None = None,
+        loaded: Callable[[System], None] | None = None) -> Run:
+    """Read, load and derive ``path`` once.
+
+    ``for_code``: a system whose generated code is its straight-line program
+    alone (:mod:`gacli.mechanics.code`) is derived by that, and its rolling
+    rows are never formed. ``loaded`` sees the System before it is derived
+    (gacli check's notes on the declarations, kept if the derivation fails).
+    """
+    step = progress or (lambda name: None)
+    step(STEP_READ)
+    source = read(path)
+    return run_source(source, for_code=for_code, progress=step, loaded=loaded)
+
+
+def run_source(source: SourceFile, *, for_code: bool = False, progress: Callable[[str], None] | None = None,
+               loaded: Callable[[System], None] | None = None) -> Run:
+    """:func:`run` from a source already read."""
+    step = progress or (lambda name: None)
+    step(STEP_LOAD)
+    system, complete = load_in_stages(source)
+    if for_code and (program := derive_for_code(system)) is not None:
+        return Run(source, system, program)
+    system = complete()
+    if loaded is not None:
+        loaded(system)
+    return Run(source, system, derive(system, progress=step))

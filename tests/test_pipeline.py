@@ -1,0 +1,84 @@
+"""One pipeline: a command reads the file once, loads it once and builds its equations once (issue #28)."""
+
+from __future__ import annotations
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import ROOT
+
+SYSTEMS = ROOT / "systems"
+
+
+@pytest.fixture
+def counts(monkeypatch):
+    """How often a file is parsed, a System built and a straight-line program built."""
+    import gacli.mechanics.code as code
+    import gacli.read.source as source
+    from gacli.loader.loading import _Builder
+
+    seen = {"read": 0, "load": 0, "program": 0}
+
+    def counting(name, original):
+        def wrapper(*args, **kwargs):
+            seen[name] += 1
+            return original(*args, **kwargs)
+        return wrapper
+
+    monkeypatch.setattr(source, "parse_source", counting("read", source.parse_source))
+    monkeypatch.setattr(_Builder, "_system", counting("load", _Builder._system))
+    monkeypatch.setattr(code, "build_program", counting("program", code.build_program))
+    code._PROGRAMS.clear()
+    return seen
+
+
+def _derive(*args: str):
+    from gacli.cli import app
+
+    result = CliRunner().invoke(app, ["derive", *args])
+    assert result.exit_code == 0, result.output
+    return result.output
+
+
+@pytest.mark.parametrize("name", ["rolling_disk", "whipple_bicycle", "sphere_on_turntable"])
+def test_code_reads_and_loads_the_file_once(counts, name, tmp_path):
+    _derive(str(SYSTEMS / f"{name}.yaml"), "--format", "c", "--output", f"{tmp_path}/")
+    assert counts["read"] == 1
+    assert counts["load"] == 1
+    assert counts["program"] <= 1
+
+
+def test_check_and_text_read_and_load_once(counts):
+    from gacli.cli import app
+
+    _derive(str(SYSTEMS / "rolling_disk.yaml"))
+    assert (counts["read"], counts["load"]) == (1, 1)
+    result = CliRunner().invoke(app, ["check", str(SYSTEMS / "rolling_disk.yaml")])
+    assert result.exit_code == 0, result.output
+    assert (counts["read"], counts["load"]) == (2, 2)
+
+
+def test_rows_added_later_are_the_rows_of_one_load():
+    from gacli.loader.loading import load_in_stages, load_source
+    from gacli.read.source import read_source
+
+    source = read_source(SYSTEMS / "whipple_bicycle.yaml")
+    first, complete = load_in_stages(source)
+    assert not first.rolling_rows and len(first.constraints) == 0
+    later, whole = complete(), load_source(source)
+    assert later.rolling_rows and whole.rolling_rows
+    assert [c.text for c in later.constraints] == [c.text for c in whole.constraints]
+    assert [c.form for c in later.constraints] == [c.form for c in whole.constraints]
+    assert complete() is later
+
+
+def test_standard_input_is_a_system_file():
+    from gacli.cli import app
+
+    text = (SYSTEMS / "particle_in_plane.yaml").read_text()
+    result = CliRunner().invoke(app, ["derive", "-"], input=text)
+    assert result.exit_code == 0, result.output
+    assert "Gibbs-Appell equations" in result.output
+    bad = CliRunner().invoke(app, ["derive", "-"], input="gacli: 1\nname: x\ncoordinates: [q]\nbodies: {b: {mass: m}}\n")
+    assert bad.exit_code == 1
+    assert "<stdin>:" in bad.output
