@@ -43,6 +43,8 @@ SystemPath = Annotated[Path, typer.Argument(
 # The same budget as gacli check's --timeout (gacli.budget); the literals are
 # here so that --help does not import SymPy. A test checks they agree.
 DEFAULT_TIMEOUT = 300.0
+# Problems printed for one file, as gacli.check.MAX_DIAGNOSTICS (a test checks they agree).
+MAX_DIAGNOSTICS = 100
 Timeout = Annotated[float, typer.Option(
     "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command, past which it stops with "
     "'ran out of time in the step ...' (0: no limit).")]
@@ -65,7 +67,10 @@ def _boundary():
     except SystemFileError as exc:
         from gacli.display import console
 
-        console.diagnostics(exc.diagnostics)
+        shown = exc.diagnostics[:MAX_DIAGNOSTICS]
+        console.diagnostics(shown)
+        if len(exc.diagnostics) > len(shown):  # as gacli check's reports: a file of aliases can hold thousands
+            console.error(f"{len(exc.diagnostics) - len(shown)} more problems not shown")
         raise typer.Exit(code=1) from None
     except GacliError as exc:
         from gacli.display import console
@@ -141,6 +146,10 @@ def derive(
 
     derive_usage(format, output, steps, reactions)
     with _boundary():
+        if output is not None:  # a device or FIFO is refused before the work, not after it
+            from gacli.output import refuse_special
+
+            refuse_special(output)
         with _budget(file, timeout) as state:
             derivation = _derive(file, state, for_code=format in CODE_FORMATS and not reactions)
             state(f"writing the {format} output")

@@ -82,3 +82,36 @@ def test_standard_input_is_a_system_file():
     bad = CliRunner().invoke(app, ["derive", "-"], input="gacli: 1\nname: x\ncoordinates: [q]\nbodies: {b: {mass: m}}\n")
     assert bad.exit_code == 1
     assert "<stdin>:" in bad.output
+
+
+def test_a_file_of_thousands_of_problems_prints_a_hundred(tmp_path):
+    from gacli.check import MAX_DIAGNOSTICS
+    from gacli.cli import MAX_DIAGNOSTICS as CLI_MAX
+    from gacli.cli import app
+
+    assert CLI_MAX == MAX_DIAGNOSTICS
+    bodies = "".join(f"  b{i}: {{mass: zz{i}, position: [q, 0, 0]}}\n" for i in range(3000))
+    path = tmp_path / "many.yaml"
+    path.write_text("gacli: 1\nname: many\ncoordinates: [q]\nbodies:\n" + bodies)
+    result = CliRunner().invoke(app, ["derive", str(path)])
+    assert result.exit_code == 1
+    lines = result.output.splitlines()
+    assert len(lines) == MAX_DIAGNOSTICS + 1
+    assert lines[-1] == f"error: {3000 - MAX_DIAGNOSTICS} more problems not shown"
+
+
+def test_a_fifo_output_is_refused_before_the_derivation(tmp_path, monkeypatch):
+    import os
+
+    import gacli.pipeline
+
+    fifo = tmp_path / "out.c"
+    os.mkfifo(fifo)
+    monkeypatch.setattr(gacli.pipeline, "derive", lambda *a, **k: pytest.fail("derived before refusing"))
+    from gacli.cli import app
+
+    result = CliRunner().invoke(app, ["derive", str(SYSTEMS / "particle_in_plane.yaml"), "--format", "c",
+                                      "--output", str(fifo)])
+    assert result.exit_code == 1
+    assert "not a regular file" in result.output
+    assert fifo.exists() and not fifo.is_file()
