@@ -14,6 +14,7 @@ from collections.abc import Mapping
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from gacli.algebra.readable import oriented, positive_first, toggled, turned
 from gacli.algebra.symbols import RATE_NAME
 from gacli.model import System
 from gacli.read.texsafe import is_printable_name
@@ -110,6 +111,26 @@ class GacliLatexPrinter(LatexPrinter):
         if order in _DOTS:
             return f"{_DOTS[order]}{{{head}}}{tail}"
         return f"{{{head}}}^{{({order})}}{tail}"
+
+    # The sign order a textbook uses, as the text output has it (gacli.algebra.readable).
+    def _as_ordered_terms(self, expr, order=None):
+        return positive_first(super()._as_ordered_terms(expr, order=order))
+
+    def _print_Add(self, expr, order=None) -> str:
+        tex = ""
+        for i, term in enumerate(self._as_ordered_terms(expr, order=order)):
+            negative, magnitude = oriented(term)
+            term_tex = self._print(magnitude)
+            if self._needs_add_brackets(magnitude):
+                term_tex = rf"\left({term_tex}\right)"
+            tex += ("- " if negative else "") + term_tex if i == 0 else (" - " if negative else " + ") + term_tex
+        return tex
+
+    def _print_Mul(self, expr) -> str:
+        turn = turned(expr)
+        if turn is None:
+            return super()._print_Mul(expr)
+        return toggled(super()._print_Mul(turn[1]), turn[0])
 
     def _print_atan2(self, expr: sp.Expr, exp: str | None = None) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
