@@ -141,7 +141,7 @@ def test_cylinder_equations_read_as_in_the_chapter():
     text = text_of(derived("cylinder_in_cylinder"))
     assert r"G &= \frac{3 M c^{2}}{4} \, \ddot{\theta}^{2} + \dots" in text
     assert r"\frac{\partial G}{\partial \ddot{\theta}} &= \frac{3 M c^{2}}{2} \, \ddot{\theta} = - M c g \sin {\theta}" in text
-    assert r"\dot{\phi} &= \frac{c \dot{\theta}}{a}" in text
+    assert r"\dot{\phi} &= \frac{c}{a} \, \dot{\theta}" in text
 
 
 def test_long_sums_are_broken_across_lines():
@@ -251,3 +251,89 @@ def test_long_equations_name_g_through_their_coefficients_in_latex_too():
     assert r"\texttt{gacli gibbs} writes it out" in text and "G &=" not in text
     disk = emit_latex(derived("rolling_disk"))["rolling_disk.tex"]
     assert "G &=" in disk
+
+
+# -- the worked solution as pages of a book (issue 30) ---------------------------
+
+def _pdflatex_log(text: str, name: str, folder: Path) -> str:
+    from conftest import require_tool
+
+    pdflatex = require_tool("pdflatex")  # a skip here, a failure in CI
+    (folder / name).write_text(text, encoding="utf-8")
+    run = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", name],
+                         cwd=folder, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stdout[-3000:]
+    return (folder / name).with_suffix(".log").read_text(encoding="utf-8", errors="replace")
+
+
+@pytest.fixture(scope="session")
+def steps_documents(tmp_path_factory):
+    """Every systems/ file's standalone --steps document and its pdflatex log, made once a session."""
+    from conftest import require_tool
+
+    require_tool("pdflatex")
+    folder = tmp_path_factory.mktemp("steps")
+    documents = {}
+    for path in SYSTEM_FILES:
+        ((name, text),) = emit_latex(derived(path.stem), standalone=True, steps=True).items()
+        documents[path.stem] = (text, _pdflatex_log(text, name, folder))
+    return documents
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_fits_its_pages(path, steps_documents):
+    _, log = steps_documents[path.stem]
+    overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
+    assert max(overfull, default=0.0) <= 2.0, overfull
+    assert "Overfull \\vbox" not in log
+
+
+# A Python list or an operator of code in the document: `[0, 0, -g*m]`, `x**2`.
+_CODE = re.compile(r"\[[^\]\n]*,[^\]\n]*\]|\*\*|\w\*\w")
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_has_no_code(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    body = text.split(r"\begin{document}")[1]
+    assert not [line for line in body.splitlines() if _CODE.search(line)]
+
+
+def _terms(block: str) -> list[str]:
+    """The signed terms of the rows of an align* block, split at + and − outside any braces or brackets."""
+    text = re.sub(r"\\\\(\[[^\]]*\])?|&|\\quad|\\tag\*\{[^}]*\}|\\[Bb]ig[lr]|\\left|\\right", " ", block)
+    terms, depth, current = [], 0, ""
+    for c in text:
+        depth += (c in "({[") - (c in ")}]")
+        if depth == 0 and c in "+-=":
+            terms.append(" ".join(current.split()))
+            current = c if c == "-" else ""
+            continue
+        current += c
+    return [t for t in terms + [" ".join(current.split())] if t]
+
+
+def sin_cos_pairs(text: str) -> list[str]:
+    """Terms c·sin²θ of one equation block that stand beside c·cos²θ, the same c: a pair that is c."""
+    pairs = []
+    for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S):
+        terms = set(_terms(block))
+        for term in terms:
+            for angle in re.findall(r"\\sin\^\{2\}\s*(\{[^{}]*\}|\{\\left\(.*?\\right\)\})", term):
+                twin = term.replace(rf"\sin^{{2}} {angle}", rf"\cos^{{2}} {angle}").replace(rf"\sin^{{2}}{angle}", rf"\cos^{{2}}{angle}")
+                if twin != term and twin in terms:
+                    pairs.append(term)
+    return pairs
+
+
+def test_the_pair_finder_finds_the_pair_the_issue_saw():
+    block = (r"\begin{align*} G &= \frac{m r^{2} \sin^{2} {\theta}}{2} \, \ddot{\theta}^{2}"
+             r" + \frac{m r^{2} \cos^{2} {\theta}}{2} \, \ddot{\theta}^{2} \end{align*}")
+    assert sin_cos_pairs(block)
+    assert not sin_cos_pairs(block.replace(r"\cos^{2} {\theta}}{2}", r"\cos^{2} {\theta}}{3}"))
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_cancels_sin2_cos2_pairs(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    assert not sin_cos_pairs(text)

@@ -127,7 +127,7 @@ def rate_relations(d: Derivation, tidy: Tidy) -> Step:
             items.append(Equation(c.rates.relation, sp.S.Zero, ""))
             continue
         lhs = sum((coef * rates[n] for n, coef in c.form.coefficients), sp.S.Zero) + c.form.dt
-        items.append(Equation(lhs, sp.S.Zero, "14.1"))
+        items.append(Equation(printed.tidy(lhs), sp.S.Zero, "14.1"))
     for q in s.quasi_coordinates:
         if q.differential is not None:
             rhs = sum((coef * rates[n] for n, coef in q.differential.coefficients), sp.S.Zero) + q.differential.dt

@@ -154,7 +154,7 @@ def rows(label: str, parts: list[Part], printer: GacliLatexPrinter, rhs: list[Pa
     right = fill(rhs, printer, room - INDENT, room) if rhs else ["0"]
     if len(lines) == 1 and len(right) == 1 and typeset_width(lines[0] + right[0]) + 2 <= room:
         if not label:
-            return [f"{lines[0]} &= {right[0]}"]
+            return [f"&{lines[0]} = {right[0]}"]
         return _rows(label, [lines[0] + " = " + right[0]])
     return _rows(label, lines + ["= " + right[0]] + right[1:], equals_at=len(lines))
 
@@ -165,12 +165,13 @@ def expression_rows(label: str, expr: sp.Expr, printer: GacliLatexPrinter, width
 
 
 def _rows(label: str, lines: list[str], equals_at: int | None = None) -> list[str]:
-    if not label:  # a relation, lhs = rhs, aligned on its = (or on its left when it is broken)
-        if equals_at == 1 and len(lines) == 2:
-            return [f"{lines[0]} &{lines[1]}"]
+    if not label:  # a relation, lhs = rhs, set flush left, so that a broken one aligns with the others
         out = [f"&{lines[0]}"]
         for i, line in enumerate(lines[1:], start=1):
-            out.append(f"&{line}" if i == equals_at else rf"&\quad {line}")
+            if i == equals_at and typeset_width(out[-1] + line) <= LINE_WIDTH:
+                out[-1] += f" {line}"
+            else:
+                out.append(f"&{line}" if i == equals_at else rf"&\quad {line}")
         return out
     out = [f"{label} &= {lines[0]}"]
     for i, line in enumerate(lines[1:], start=1):
@@ -209,28 +210,40 @@ def _joined(current: str, sign: str, tex: str, lead: bool) -> str:
 
 
 def broken(part: Part, printer: GacliLatexPrinter, room: int) -> list[str] | None:
-    """The part over several lines, broken inside its widest sum; None when it has no sum to break."""
+    """The part over several lines: its plain factors in front, then each sum factor in brackets, a sum
+    too wide for the line broken inside them; None when it has no sum to break."""
     coefficient, monomial = part
     factors = list(sp.Mul.make_args(coefficient))
     sums = [f for f in factors if _sum_of(f) is not None]
     if not sums:
         return None
-    widest = max(sums, key=lambda f: typeset_width(printer.doprint(f)))
-    factors.remove(widest)
-    front = sp.Mul(*factors)
-    head = "" if front == 1 else printer.doprint(front)
-    if head and front.is_Add:
-        head = rf"\left({head}\right)"
-    base, exponent = _sum_of(widest)
-    inner = ordered_parts(base, printer)
-    lines = fill(inner, printer, room - INDENT, first_room=room - typeset_width(head) - 2)
-    big = "B" if any(r"\frac" in line for line in lines) else "b"
-    tail = "" if exponent == 1 else f"^{{{printer.doprint(exponent)}}}"
+    plain = sp.Mul(*[f for f in factors if _sum_of(f) is None])
+    lines = ["" if plain == 1 else printer.doprint(plain)]
+    for factor in sums:
+        base, exponent = _sum_of(factor)
+        power = "" if exponent == 1 else f"^{{{printer.doprint(exponent)}}}"
+        tex = rf"\left({printer.doprint(base)}\right){power}"
+        free = room - typeset_width(lines[-1]) - 1
+        if typeset_width(tex) <= free:
+            lines[-1] = f"{lines[-1]} {tex}".lstrip()
+            continue
+        if typeset_width(tex) <= room - INDENT:
+            lines.append(rf"\quad \times {tex}")
+            continue
+        if free < room // 3:  # too little left on this line to open the bracket here
+            lines.append(r"\quad \times")
+            free = room - INDENT - 4
+        inner = fill(ordered_parts(base, printer), printer, room - INDENT, first_room=free - 2)
+        big = "B" if any(r"\frac" in line for line in inner) else "b"
+        lines[-1] = f"{lines[-1]} \\{big}igl( {inner[0]}".lstrip()
+        lines += [rf"\quad {line}" for line in inner[1:]]
+        lines[-1] += rf" \{big}igr){power}"
     if monomial != 1:
-        tail += " \\, " + printer.doprint(monomial)
-    lines[0] = f"{head} \\{big}igl( {lines[0]}".lstrip()
-    lines[1:] = [rf"\quad {line}" for line in lines[1:]]
-    lines[-1] += rf" \{big}igr){tail}"
+        tail = printer.doprint(monomial)
+        if typeset_width(lines[-1]) + typeset_width(tail) + 1 <= room:
+            lines[-1] += " \\, " + tail
+        else:
+            lines.append(rf"\quad \times {tail}")
     return lines
 
 
