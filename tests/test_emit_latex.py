@@ -301,7 +301,7 @@ def test_worked_solution_has_no_code(path, steps_documents):
 
 def _terms(block: str) -> list[str]:
     """The signed terms of the rows of an align* block, split at + and − outside any braces or brackets."""
-    text = re.sub(r"\\\\(\[[^\]]*\])?|&|\\quad|\\tag\*\{[^}]*\}|\\[Bb]ig[lr]|\\left|\\right", " ", block)
+    text = re.sub(r"\\\\(\[[^\]]*\])?|&|\\quad|\\tag\*\{[^}]*\}|\\[Bb]igg?[lr]|\\left|\\right", " ", block)
     terms, depth, current = [], 0, ""
     for c in text:
         depth += (c in "({[") - (c in ")}]")

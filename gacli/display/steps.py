@@ -200,7 +200,12 @@ def _angular_axes(motion) -> tuple:
 
 def virtual_work(d: Derivation, tidy: Tidy) -> Step:
     s = d.system
-    items: list = [Sentence(("The work done in a virtual displacement (", Formula("δt = 0", r"\delta t = 0"), "):"))]
+    if s.work is None and not s.forces and not s.torques and (s.frames is None or not s.frames.loads) and s.potential == 0:
+        items: list = [Sentence(("No load does work in a virtual displacement (", Formula("δt = 0", r"\delta t = 0"),
+                                 "): every generalized force is zero (eq. 14.13).",))]
+        items += [Equation(sp.Symbol(f"Q_{n}"), sp.S.Zero, "14.13") for n in d.independent]
+        return Step("Step 3. Virtual work and generalized forces", tuple(items))
+    items = [Sentence(("The work done in a virtual displacement (", Formula("δt = 0", r"\delta t = 0"), "):"))]
     if s.work is not None:
         written = sum((c * variation(n) for n, c in s.work.coefficients), sp.S.Zero)
         items.append(Equation(sp.Symbol("δW_work"), written))

@@ -87,17 +87,31 @@ def grouped(expr: sp.Expr) -> list[Part]:
     for term in sp.Add.make_args(expr):
         key, coefficient = _key(term, accelerations, rates)
         groups.setdefault(key, []).append(coefficient)
-    parts = []
+    parts, kinds = [], []
     for key in sorted(groups, key=lambda k: k[:2]):
         coefficients = groups[key]
         if key[0] >= 2:
             parts += [Part(term) for term in coefficients]
+            kinds += [key[0]] * len(coefficients)
             continue
         coefficient = sp.Add(*coefficients)
         if len(coefficients) > 1:
             coefficient = sp.factor_terms(coefficient)
         if coefficient != 0:
             parts.append(Part(coefficient, key[2]))
+            kinds.append(key[0])
+    return _positive_first(parts, kinds)
+
+
+def _positive_first(parts: list[Part], kinds: list[int]) -> list[Part]:
+    """A positive group of the leading kind moved to the front, as a sum is begun by hand."""
+    if not parts or not signed(parts[0])[0]:
+        return parts
+    for i, (part, kind) in enumerate(zip(parts, kinds)):
+        if kind != kinds[0]:
+            break
+        if not signed(part)[0]:
+            return [part] + parts[:i] + parts[i + 1:]
     return parts
 
 
@@ -234,10 +248,9 @@ def broken(part: Part, printer: GacliLatexPrinter, room: int) -> list[str] | Non
             lines.append(r"\quad \times")
             free = room - INDENT - 4
         inner = fill(ordered_parts(base, printer), printer, room - INDENT, first_room=free - 2)
-        big = "B" if any(r"\frac" in line for line in inner) else "b"
-        lines[-1] = f"{lines[-1]} \\{big}igl( {inner[0]}".lstrip()
+        lines[-1] = f"{lines[-1]} \\{_size(inner)}l( {inner[0]}".lstrip()
         lines += [rf"\quad {line}" for line in inner[1:]]
-        lines[-1] += rf" \{big}igr){power}"
+        lines[-1] += rf" \{_size(inner)}r){power}"
     if monomial != 1:
         tail = printer.doprint(monomial)
         if typeset_width(lines[-1]) + typeset_width(tail) + 1 <= room:
@@ -245,6 +258,15 @@ def broken(part: Part, printer: GacliLatexPrinter, room: int) -> list[str] | Non
         else:
             lines.append(rf"\quad \times {tail}")
     return lines
+
+
+def _size(lines: list[str]) -> str:
+    """The size of brackets around these lines: above the brackets and fractions inside them."""
+    if any(r"\Bigl" in line or r"\biggl" in line for line in lines):
+        return "bigg"
+    if any(r"\frac" in line or r"\bigl" in line or r"\left" in line for line in lines):
+        return "Big"
+    return "big"
 
 
 def _sum_of(factor: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
@@ -265,7 +287,7 @@ def ordered_parts(expr: sp.Expr, printer: GacliLatexPrinter) -> list[Part]:
 # -- typeset width ---------------------------------------------------------------
 
 _ZERO_WIDTH = re.compile(r"\\(left|right|dot|ddot|dddot|ddddot|bar|hat|tilde|vec|mathrm|mathbf|boldsymbol|operatorname"
-                         r"|[Bb]igl|[Bb]igr|quad|qquad|tag\*?)\b")
+                         r"|[Bb]igg?l|[Bb]igg?r|quad|qquad|tag\*?)\b")
 _COMMAND = re.compile(r"\\[A-Za-z]+")
 _WIDE_COMMANDS = frozenset((r"\sin", r"\cos", r"\tan", r"\log", r"\operatorname"))
 _FRAC = r"\frac{"
