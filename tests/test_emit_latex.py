@@ -337,3 +337,64 @@ def test_the_pair_finder_finds_the_pair_the_issue_saw():
 def test_worked_solution_cancels_sin2_cos2_pairs(path, steps_documents):
     text, _ = steps_documents[path.stem]
     assert not sin_cos_pairs(text)
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_has_one_tag_per_block(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    blocks = re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S)
+    assert all(block.count(r"\tag") <= 1 for block in blocks)
+    # The reduced G is the chapter's unnumbered G_2 + G_1, not eq. (14.19).
+    reduced = text.split("and without the terms free of accelerations")[-1].split(r"\end{align*}")[0]
+    assert r"\tag" not in reduced
+
+
+def test_step_one_and_sentences_are_mathematics(steps_documents):
+    text, _ = steps_documents["sphere_on_turntable"]
+    assert "$k = n + p - d - l = 2 + 3 - 0 - 2 = 3$ degrees of freedom" in text
+    assert "quasi-coordinates: $q_{x}, q_{y}, q_{z}$" in text
+    assert r"$\partial G / \partial \dot{u}_s = Q_s$" in text
+    body = text.split(r"\begin{document}")[1]
+    assert "q\\_" not in body and "$\\partial$G" not in body
+
+
+def test_loads_are_columns_in_the_frame_the_file_used(steps_documents):
+    disk, _ = steps_documents["rolling_disk"]
+    assert r"\mathbf{F}_{1} &= \begin{bmatrix} 0 \\ 0 \\ - g m \end{bmatrix}_{\mathrm{N}}" in disk
+    drive, _ = steps_documents["differential_drive"]
+    # The file gives the motor torques in the chassis' axes; sin² + cos² of the heading never appears.
+    assert r"\begin{bmatrix} 0 \\ T_{L} \\ 0 \end{bmatrix}_{\mathrm{chassis}}" in drive
+    rigid, _ = steps_documents["rigid_body"]  # format 1: a force in N at a point, a torque in body axes
+    assert r"\begin{bmatrix} F_{x} \\ F_{y} \\ F_{z} \end{bmatrix}_{\mathrm{N}}" in rigid
+    assert r"\begin{bmatrix} M_{x} \\ M_{y} \\ M_{z} \end{bmatrix}_{\mathrm{body}}" in rigid
+
+
+def test_textbook_letters_and_words(steps_documents):
+    disk, _ = steps_documents["rolling_disk"]
+    assert r"\ddot{\psi}" in disk and r"\mathrm{yaw}" not in disk
+
+
+def test_a_long_expression_of_any_shape_fits_the_page(tmp_path):
+    """Not one of the 13 files: products of several long sums, fractions, a square of a sum and
+    rates and accelerations of long names, as a textbook problem may give them."""
+    from gacli.emit.latex_layout import expression_rows, grouped, rows
+
+    names = sp.symbols("alpha_1:9 L_{rear} L_{front} w", real=True)
+    th, ph = sp.symbols("theta phi", real=True)
+    acc = [sp.Symbol(f"ddot({n})", real=True) for n in ("theta", "phi", "x_{wheel}")]
+    rate = [sp.Symbol(f"dot({n})", real=True) for n in ("theta", "phi", "x_{wheel}")]
+    wide = sum(n * sp.sin(th) ** i * sp.cos(ph) for i, n in enumerate(names))
+    expr = (wide * (wide + rate[0] * rate[1]) / (2 * names[-1]) * acc[0]
+            + (wide * rate[2] + names[0] * acc[1]) ** 2 / 3
+            + sp.Add(*[n * r * s for n in names for r in rate for s in rate]) * acc[2]
+            + wide / (names[8] - names[9] * sp.cos(th)) * rate[0] ** 2)
+    printer = GacliLatexPrinter()
+    blocks = [expression_rows("G", expr, printer), rows(r"\frac{\partial G}{\partial \ddot{\theta}}", grouped(expr), printer,
+                                                        grouped(wide))]
+    body = "\n".join(r"\begin{align*}" + "\n" + " \\\\\n".join(block) + "\n" + r"\end{align*}" for block in blocks)
+    text = "\n".join([r"\documentclass{article}", r"\usepackage{amsmath}", r"\allowdisplaybreaks",
+                      r"\begin{document}", body, r"\end{document}"])
+    log = _pdflatex_log(text, "shape.tex", tmp_path)
+    overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
+    assert max(overfull, default=0.0) <= 2.0, overfull
+    assert "Overfull \\vbox" not in log

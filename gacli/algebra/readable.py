@@ -66,6 +66,7 @@ class Tidy:
         # A pair of angles the expression holds only through their sum or difference
         # (a bead at s on a spinning hoop: s + φ) is written so, as by hand.
         expr = relative(expr, sums=True)
+        expr = angle_sums_compacted(expr)
         candidates = [c for c in (self._readable(expr), self._by_rates(expr), self._over_common(expr))
                       if c is not None]
         # The shortest for a reader, unless another has symbols cancelled out of it
@@ -119,6 +120,22 @@ class Tidy:
         for key in sorted(parts, key=sp.default_sort_key):
             total += self(parts[key]) * key
         return total
+
+
+# A sum is searched for sin x cos y ± cos x sin y only up to this many terms (the search is by pairs).
+COMPACT_TERMS = 8
+
+
+def angle_sums_compacted(expr: sp.Expr) -> sp.Expr:
+    """sin x cos y − sin y cos x as sin(x − y), cos x cos y + sin x sin y as cos(x − y), and the
+    same for sums, wherever such a pair stands in a small sum: as a difference that the whole
+    expression holds (:func:`gacli.algebra.angles.relative`) is written, so is one it holds
+    beside other uses of its angles (a trailer's b (sin θ cos θ_T − sin θ_T cos θ) θ̇)."""
+    from sympy.simplify.fu import TR10i
+
+    if not (expr.has(sp.sin) and expr.has(sp.cos)):
+        return expr
+    return expr.replace(lambda e: e.is_Add and len(e.args) <= COMPACT_TERMS and e.has(sp.sin) and e.has(sp.cos), TR10i)
 
 
 def readable(expr: sp.Expr) -> sp.Expr:
