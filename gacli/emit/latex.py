@@ -93,7 +93,7 @@ def _comment(label: str, text: str) -> list[str]:
 def _fragment(sections) -> list[str]:
     lines: list[str] = []
     for section in sections:
-        comment = section.title + (f". {section.note}" if section.note else "")
+        comment = ". ".join(part for part in (section.title, section.note) if part)
         # Free text comes in lines (see _wrap): each must stay a comment.
         lines += [""] + [f"% {line}" for line in comment.split("\n")]
         lines += [r"\noindent " + section.note] if section.shown else []

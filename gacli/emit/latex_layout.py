@@ -170,6 +170,8 @@ def rows(label: str, parts: list[Part], printer: GacliLatexPrinter, rhs: list[Pa
         if not label:
             return [f"&{lines[0]} = {right[0]}"]
         return _rows(label, [lines[0] + " = " + right[0]])
+    if len(right) == 1 and typeset_width(lines[-1] + right[0]) + 2 <= room - INDENT:
+        return _rows(label, lines[:-1] + [f"{lines[-1]} = {right[0]}"])  # a short right side ends the last line
     return _rows(label, lines + ["= " + right[0]] + right[1:], equals_at=len(lines))
 
 

@@ -31,7 +31,9 @@ def _step_blocks(step, printer: GacliLatexPrinter) -> list[Section]:
     def close():
         nonlocal title, note, groups, tag
         if groups or note:
-            blocks.append(Section(title, note, groups, tag=tag))
+            # Equations of several lines each are set apart, as a book spaces them.
+            gap = "[1ex]" if any(len(group) > 1 for group in groups) and len(groups) > 1 else ""
+            blocks.append(Section(title, note, groups, gap=gap, tag=tag))
             title, note, groups, tag = "", "", [], ""
 
     for item in step.items:
