@@ -14,7 +14,6 @@ import sympy as sp
 
 from gacli.display import printed
 from gacli.mechanics.equations import Derivation
-from gacli.algebra import symbols as S
 from gacli.algebra.readable import TOO_LARGE, Tidy, displayable, show
 from gacli.algebra.symbols import rate_name
 

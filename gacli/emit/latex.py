@@ -16,8 +16,6 @@ from __future__ import annotations
 import os
 import textwrap
 
-import sympy as sp
-
 from gacli.algebra import symbols as S
 from gacli.display import printed
 from gacli.emit.latex_layout import Section, align, expression_rows, grouped, rows

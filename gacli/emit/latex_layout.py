@@ -12,14 +12,12 @@ printed form is the form given (docs/latex.md).
 
 from __future__ import annotations
 
-import functools
 import re
-import sys
 from typing import NamedTuple
 
 import sympy as sp
 
-from gacli.algebra.readable import Tidy, oriented, positive_first
+from gacli.algebra.readable import oriented, positive_first
 from gacli.emit.latex_printer import GacliLatexPrinter, split_rate
 
 # Typeset width of a row (in characters of typeset maths: about 6.5 pt each in 10 pt
@@ -53,12 +51,6 @@ class Part(NamedTuple):
 
     coefficient: sp.Expr
     monomial: sp.Expr = sp.S.One
-
-
-@functools.lru_cache(maxsize=1024)  # G and the equations read the same coefficients
-def tidy(expr: sp.Expr) -> sp.Expr:
-    """The display simplifier that text uses too (:func:`gacli.algebra.readable.readable`), within its size bounds."""
-    return Tidy(budget=sys.maxsize)(expr)
 
 
 def _order(symbol: sp.Symbol) -> int:
