@@ -54,7 +54,12 @@ class Part(NamedTuple):
 
 
 def _order(symbol: sp.Symbol) -> int:
-    return split_rate(symbol.name)[0] if isinstance(symbol, sp.Symbol) else 0
+    """2 for an acceleration; 1 for a rate or a virtual displacement δq (δW is grouped by them); else 0."""
+    if not isinstance(symbol, sp.Symbol):
+        return 0
+    if symbol.name.startswith("δ"):
+        return 1
+    return split_rate(symbol.name)[0]
 
 
 def _is_monomial_in(expr: sp.Expr, symbols: set) -> bool:

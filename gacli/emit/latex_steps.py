@@ -87,7 +87,11 @@ def _step_rows(item: Equation, printer: GacliLatexPrinter) -> list[str]:
 
 
 def column(vector: sp.MatrixBase, printer: GacliLatexPrinter) -> str:
-    return r"\begin{bmatrix} " + r" \\ ".join(printer.doprint(e) for e in vector) + r" \end{bmatrix}"
+    """A column; fractions in it set at the size of the equations around it, not of an index."""
+    entries = [printer.doprint(e) for e in vector]
+    if any(r"\frac" in e for e in entries):
+        return r"\begin{bmatrix} " + r" \\[1ex] ".join(rf"\displaystyle {e}" for e in entries) + r" \end{bmatrix}"
+    return r"\begin{bmatrix} " + r" \\ ".join(entries) + r" \end{bmatrix}"
 
 
 def vector_rows(label: str, vector: sp.MatrixBase, printer: GacliLatexPrinter, frame: str = "") -> list[str]:
