@@ -398,3 +398,9 @@ def test_a_long_expression_of_any_shape_fits_the_page(tmp_path):
     overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
     assert max(overfull, default=0.0) <= 2.0, overfull
     assert "Overfull \\vbox" not in log
+
+
+def test_dots_stand_over_the_letter_of_a_subscripted_override():
+    printer = GacliLatexPrinter({"wheel_R": r"\theta_R", "beta": r"\beta_{12}"})
+    assert printer.doprint(sp.Symbol("dot(wheel_R)")) == r"\dot{\theta}_R"
+    assert printer.doprint(sp.Symbol("ddot(beta)")) == r"\ddot{\beta}_{12}"

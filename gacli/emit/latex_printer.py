@@ -21,6 +21,7 @@ from gacli.read.texsafe import is_printable_name
 
 _RATE = RATE_NAME
 _DIFFERENTIAL = re.compile(r"^d\[(.+)\]$")
+_SUBSCRIPTED = re.compile(r"^(\\?[A-Za-z]+)(_(?:[A-Za-z0-9]|\{[^{}]*\}))$")
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 
 
@@ -98,7 +99,9 @@ class GacliLatexPrinter(LatexPrinter):
     def _decorated(self, base: str, order: int) -> str:
         """The base name's LaTeX with ``order`` dots over its head, not over its subscripts."""
         if base in self._names:
-            head, tail = self._names[base], ""
+            # The dots go over the letter of a latex: name, not over its subscript (\dot{\theta}_R).
+            parts = _SUBSCRIPTED.match(self._names[base])
+            head, tail = (parts[1], parts[2]) if parts else (self._names[base], "")
         else:
             head, supers, subs = self._split_super_sub(base)
             tail = ("^{%s}" % " ".join(supers) if supers else "") + ("_{%s}" % " ".join(subs) if subs else "")
