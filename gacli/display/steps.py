@@ -121,7 +121,9 @@ def _names(items) -> Names:
 def rate_relations(d: Derivation, tidy: Tidy) -> Step:
     s, names = d.system, d.rates.names
     rates = {n: S.rate(n) for n in names}
-    items: list[str | Equation] = ["The relations among the rates, from the constraints (14.1) and the quasi-coordinates (14.2):"]
+    quasi = any(q.differential is not None for q in s.quasi_coordinates)
+    items: list = ["The relations among the rates, from the constraints (14.1)"
+                   + (" and the quasi-coordinates (14.2):" if quasi else ":")]
     for c in s.constraints:
         if c.rates is not None:  # not linear in the rates: shown as written (docs/nonlinear.md)
             items.append(Equation(c.rates.relation, sp.S.Zero, ""))
