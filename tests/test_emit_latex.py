@@ -387,7 +387,8 @@ def test_a_long_expression_of_any_shape_fits_the_page(tmp_path):
     expr = (wide * (wide + rate[0] * rate[1]) / (2 * names[-1]) * acc[0]
             + (wide * rate[2] + names[0] * acc[1]) ** 2 / 3
             + sp.Add(*[n * r * s for n in names for r in rate for s in rate]) * acc[2]
-            + wide / (names[8] - names[9] * sp.cos(th)) * rate[0] ** 2)
+            + wide / (names[8] - names[9] * sp.cos(th)) * rate[0] ** 2
+            + names[0] * rate[1] / sp.expand((names[8] - names[9] * sp.cos(th)) ** 5))  # a denominator multiplied out
     printer = GacliLatexPrinter()
     blocks = [expression_rows("G", expr, printer), rows(r"\frac{\partial G}{\partial \ddot{\theta}}", grouped(expr), printer,
                                                         grouped(wide))]

@@ -227,10 +227,12 @@ def broken(part: Part, printer: GacliLatexPrinter, room: int) -> list[str] | Non
     too wide for the line broken inside them; None when it has no sum to break."""
     coefficient, monomial = part
     factors = list(sp.Mul.make_args(coefficient))
-    sums = [f for f in factors if _sum_of(f) is not None]
+    # A sum in a denominator is broken only when it is too wide to stand under a fraction bar.
+    sums = [f for f in factors if _sum_of(f) is not None
+            and (_sum_of(f)[1] > 0 or typeset_width(printer.doprint(_sum_of(f)[0])) > room // 2)]
     if not sums:
         return None
-    plain = sp.Mul(*[f for f in factors if _sum_of(f) is None])
+    plain = sp.Mul(*[f for f in factors if f not in sums])
     lines = ["" if plain == 1 else printer.doprint(plain)]
     for factor in sums:
         base, exponent = _sum_of(factor)
@@ -269,11 +271,11 @@ def _size(lines: list[str]) -> str:
 
 
 def _sum_of(factor: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
-    """(the sum, its positive integer power) of a factor that is a sum or a power of one."""
+    """(the sum, its integer power) of a factor that is a sum or a power of one (a negative one: a denominator)."""
     if factor.is_Add:
         return factor, sp.S.One
     base, exponent = factor.as_base_exp()
-    if base.is_Add and exponent.is_Integer and exponent > 0:
+    if base.is_Add and exponent.is_Integer and exponent != 0:
         return base, exponent
     return None
 
