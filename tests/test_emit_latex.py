@@ -141,7 +141,7 @@ def test_cylinder_equations_read_as_in_the_chapter():
     text = text_of(derived("cylinder_in_cylinder"))
     assert r"G &= \frac{3 M c^{2}}{4} \, \ddot{\theta}^{2} + \dots" in text
     assert r"\frac{\partial G}{\partial \ddot{\theta}} &= \frac{3 M c^{2}}{2} \, \ddot{\theta} = - M c g \sin {\theta}" in text
-    assert r"\dot{\phi} &= \frac{c \dot{\theta}}{a}" in text
+    assert r"\dot{\phi} &= \frac{c}{a} \, \dot{\theta}" in text
 
 
 def test_long_sums_are_broken_across_lines():
@@ -230,9 +230,9 @@ def _compile(text: str, name: str, tmp_path: Path) -> str:
 def test_standalone_compiles(path, tmp_path):
     ((name, text),) = emit_latex(derived(path.stem), standalone=True).items()
     log = _compile(text, name, tmp_path)
-    # Equations fit the page: no line sticks out by more than 20 pt.
+    # Equations fit the page (issue 30: as the worked solution, 2 pt at most).
     overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
-    assert max(overfull, default=0.0) <= 20.0, overfull
+    assert max(overfull, default=0.0) <= 2.0, overfull
 
 
 def test_standalone_compiles_with_special_characters_in_free_text(tmp_path):
@@ -251,3 +251,157 @@ def test_long_equations_name_g_through_their_coefficients_in_latex_too():
     assert r"\texttt{gacli gibbs} writes it out" in text and "G &=" not in text
     disk = emit_latex(derived("rolling_disk"))["rolling_disk.tex"]
     assert "G &=" in disk
+
+
+# -- the worked solution as pages of a book (issue 30) ---------------------------
+
+def _pdflatex_log(text: str, name: str, folder: Path) -> str:
+    from conftest import require_tool
+
+    pdflatex = require_tool("pdflatex")  # a skip here, a failure in CI
+    (folder / name).write_text(text, encoding="utf-8")
+    run = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape", name],
+                         cwd=folder, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stdout[-3000:]
+    return (folder / name).with_suffix(".log").read_text(encoding="utf-8", errors="replace")
+
+
+@pytest.fixture(scope="session")
+def steps_documents(tmp_path_factory):
+    """Every systems/ file's standalone --steps document and its pdflatex log, made once a session."""
+    from conftest import require_tool
+
+    require_tool("pdflatex")
+    folder = tmp_path_factory.mktemp("steps")
+    documents = {}
+    for path in SYSTEM_FILES:
+        ((name, text),) = emit_latex(derived(path.stem), standalone=True, steps=True).items()
+        documents[path.stem] = (text, _pdflatex_log(text, name, folder))
+    return documents
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_fits_its_pages(path, steps_documents):
+    _, log = steps_documents[path.stem]
+    overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
+    assert max(overfull, default=0.0) <= 2.0, overfull
+    assert "Overfull \\vbox" not in log
+
+
+# A Python list or an operator of code in the document: `[0, 0, -g*m]`, `x**2`.
+_CODE = re.compile(r"\[[^\]\n]*,[^\]\n]*\]|\*\*|\w\*\w")
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_has_no_code(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    body = text.split(r"\begin{document}")[1]
+    assert not [line for line in body.splitlines() if _CODE.search(line)]
+
+
+def _terms(block: str) -> list[str]:
+    """The signed terms of the rows of an align* block, split at + and − outside any braces or brackets."""
+    text = re.sub(r"\\\\(\[[^\]]*\])?|&|\\quad|\\tag\*\{[^}]*\}|\\[Bb]igg?[lr]|\\left|\\right", " ", block)
+    terms, depth, current = [], 0, ""
+    for c in text:
+        depth += (c in "({[") - (c in ")}]")
+        if depth == 0 and c in "+-=":
+            terms.append(" ".join(current.split()))
+            current = c if c == "-" else ""
+            continue
+        current += c
+    return [t for t in terms + [" ".join(current.split())] if t]
+
+
+def sin_cos_pairs(text: str) -> list[str]:
+    """Terms c·sin²θ of one equation block that stand beside c·cos²θ, the same c: a pair that is c."""
+    pairs = []
+    for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S):
+        terms = set(_terms(block))
+        for term in terms:
+            for angle in re.findall(r"\\sin\^\{2\}\s*(\{[^{}]*\}|\{\\left\(.*?\\right\)\})", term):
+                twin = term.replace(rf"\sin^{{2}} {angle}", rf"\cos^{{2}} {angle}").replace(rf"\sin^{{2}}{angle}", rf"\cos^{{2}}{angle}")
+                if twin != term and twin in terms:
+                    pairs.append(term)
+    return pairs
+
+
+def test_the_pair_finder_finds_the_pair_the_issue_saw():
+    block = (r"\begin{align*} G &= \frac{m r^{2} \sin^{2} {\theta}}{2} \, \ddot{\theta}^{2}"
+             r" + \frac{m r^{2} \cos^{2} {\theta}}{2} \, \ddot{\theta}^{2} \end{align*}")
+    assert sin_cos_pairs(block)
+    assert not sin_cos_pairs(block.replace(r"\cos^{2} {\theta}}{2}", r"\cos^{2} {\theta}}{3}"))
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_cancels_sin2_cos2_pairs(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    assert not sin_cos_pairs(text)
+
+
+@pytest.mark.parametrize("path", SYSTEM_FILES, ids=lambda p: p.stem)
+def test_worked_solution_has_one_tag_per_block(path, steps_documents):
+    text, _ = steps_documents[path.stem]
+    blocks = re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S)
+    assert all(block.count(r"\tag") <= 1 for block in blocks)
+    # The reduced G is the chapter's unnumbered G_2 + G_1, not eq. (14.19).
+    reduced = text.split("and without the terms free of accelerations")[-1].split(r"\end{align*}")[0]
+    assert r"\tag" not in reduced
+
+
+def test_step_one_and_sentences_are_mathematics(steps_documents):
+    text, _ = steps_documents["sphere_on_turntable"]
+    assert "$k = n + p - d - l = 2 + 3 - 0 - 2 = 3$ degrees of freedom" in text
+    assert "quasi-coordinates: $q_{x}, q_{y}, q_{z}$" in text
+    assert r"$\partial G / \partial \dot{u}_s = Q_s$" in text
+    body = text.split(r"\begin{document}")[1]
+    assert "q\\_" not in body and "$\\partial$G" not in body
+
+
+def test_loads_are_columns_in_the_frame_the_file_used(steps_documents):
+    disk, _ = steps_documents["rolling_disk"]
+    assert r"\mathbf{F}_{1} &= \begin{bmatrix} 0 \\ 0 \\ - g m \end{bmatrix}_{\mathrm{N}}" in disk
+    drive, _ = steps_documents["differential_drive"]
+    # The file gives the motor torques in the chassis' axes; sin² + cos² of the heading never appears.
+    assert r"\begin{bmatrix} 0 \\ T_{L} \\ 0 \end{bmatrix}_{\mathrm{chassis}}" in drive
+    rigid, _ = steps_documents["rigid_body"]  # format 1: a force in N at a point, a torque in body axes
+    assert r"\begin{bmatrix} F_{x} \\ F_{y} \\ F_{z} \end{bmatrix}_{\mathrm{N}}" in rigid
+    assert r"\begin{bmatrix} M_{x} \\ M_{y} \\ M_{z} \end{bmatrix}_{\mathrm{body}}" in rigid
+
+
+def test_textbook_letters_and_words(steps_documents):
+    disk, _ = steps_documents["rolling_disk"]
+    assert r"\ddot{\psi}" in disk and r"\mathrm{yaw}" not in disk
+
+
+def test_a_long_expression_of_any_shape_fits_the_page(tmp_path):
+    """Not one of the 13 files: products of several long sums, fractions, a square of a sum and
+    rates and accelerations of long names, as a textbook problem may give them."""
+    from gacli.emit.latex_layout import expression_rows, grouped, rows
+
+    names = sp.symbols("alpha_1:9 L_{rear} L_{front} w", real=True)
+    th, ph = sp.symbols("theta phi", real=True)
+    acc = [sp.Symbol(f"ddot({n})", real=True) for n in ("theta", "phi", "x_{wheel}")]
+    rate = [sp.Symbol(f"dot({n})", real=True) for n in ("theta", "phi", "x_{wheel}")]
+    wide = sum(n * sp.sin(th) ** i * sp.cos(ph) for i, n in enumerate(names))
+    expr = (wide * (wide + rate[0] * rate[1]) / (2 * names[-1]) * acc[0]
+            + (wide * rate[2] + names[0] * acc[1]) ** 2 / 3
+            + sp.Add(*[n * r * s for n in names for r in rate for s in rate]) * acc[2]
+            + wide / (names[8] - names[9] * sp.cos(th)) * rate[0] ** 2
+            + names[0] * rate[1] / sp.expand((names[8] - names[9] * sp.cos(th)) ** 5))  # a denominator multiplied out
+    printer = GacliLatexPrinter()
+    blocks = [expression_rows("G", expr, printer), rows(r"\frac{\partial G}{\partial \ddot{\theta}}", grouped(expr), printer,
+                                                        grouped(wide))]
+    body = "\n".join(r"\begin{align*}" + "\n" + " \\\\\n".join(block) + "\n" + r"\end{align*}" for block in blocks)
+    text = "\n".join([r"\documentclass{article}", r"\usepackage{amsmath}", r"\allowdisplaybreaks",
+                      r"\begin{document}", body, r"\end{document}"])
+    log = _pdflatex_log(text, "shape.tex", tmp_path)
+    overfull = [float(w) for w in re.findall(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\)", log)]
+    assert max(overfull, default=0.0) <= 2.0, overfull
+    assert "Overfull \\vbox" not in log
+
+
+def test_dots_stand_over_the_letter_of_a_subscripted_override():
+    printer = GacliLatexPrinter({"wheel_R": r"\theta_R", "beta": r"\beta_{12}"})
+    assert printer.doprint(sp.Symbol("dot(wheel_R)")) == r"\dot{\theta}_R"
+    assert printer.doprint(sp.Symbol("ddot(beta)")) == r"\ddot{\beta}_{12}"

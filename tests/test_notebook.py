@@ -45,8 +45,8 @@ def test_the_bicycle_is_summarised_quickly(tmp_path):
     tex = d._repr_latex_()
     assert time.perf_counter() - start < 5, "the size is decided before any LaTeX is made"
     assert TOO_LARGE in tex and "use gacli.emit(d, 'latex')" in tex
-    assert "8 coordinates $x, y, \\mathrm{yaw}" in tex
-    assert "3 independent speeds $\\dot{\\mathrm{roll}}, \\dot{\\mathrm{wheel}}_{R}, \\dot{\\mathrm{steer}}$" in tex
+    assert "8 coordinates $x, y, \\psi" in tex
+    assert "3 independent speeds $\\dot{\\phi}, \\dot{\\theta}_R, \\dot{\\delta}$" in tex
     assert f"more than {REPR_NODES:,} terms" in tex
     assert "\\begin{align" not in tex
     compile_math(tex, tmp_path)

@@ -7,7 +7,7 @@ from typer.testing import CliRunner
 
 from conftest import LARGE, SYSTEMS, derived
 from gacli.cli import app
-from gacli.algebra.readable import TOO_LARGE, displayable
+from gacli.algebra.readable import TOO_LARGE, displayable, show
 
 ALL = sorted(p.stem for p in SYSTEMS.glob("*.yaml"))
 
@@ -178,3 +178,41 @@ def test_many_denominators_are_not_brought_over_one(monkeypatch):
     expr = sp.Add(*[sp.sin(delta) * L ** i / (y + i) for i in range(1, 300)])
     monkeypatch.setattr(sp, "together", lambda e: pytest.fail("together() was called"))
     assert over_common_denominator(expr) is None
+
+
+# -- textbook sign order and compacted pairs (issue 30) ----------------------------
+
+def test_a_sum_begins_with_a_positive_term_and_a_difference_reads_alike_everywhere():
+    from gacli.algebra.readable import show
+
+    I_y, I_z, A, B, x, y = sp.symbols("I_y I_z A B x y", real=True)
+    assert show(-I_y + I_z) == "I_z - I_y"
+    assert show(x * (-I_y + I_z)) == "x*(I_z - I_y)"
+    # (A - B) beside (B - A) in one expression: both written B - A, the sign in front.
+    assert show(x * (A - B) + y * (B - A)) == "y*(B - A) - x*(B - A)"
+
+
+def test_sign_order_keeps_the_value(rng):
+    from gacli.algebra.readable import oriented
+    from gacli.read.expr.build import Scope, build
+    from gacli.read.expr.parser import parse
+
+    A, B, C, x = sp.symbols("A B C x", real=True)
+    for expr in (x * (A - B), -x * (A - B) * (C - A) / 3, (A - B) * (B - C) * (C - A), x - A + B):
+        negative, magnitude = oriented(expr)
+        values = {s: float(v) for s, v in zip((A, B, C, x), rng.uniform(-2, 2, 4))}
+        printed = build(parse(show(expr)), Scope(values={s.name: s for s in (A, B, C, x)}, rates={}))
+        assert abs(float(((-magnitude if negative else magnitude) - expr).subs(values))) < 1e-12
+        assert abs(float((printed - expr).subs(values))) < 1e-12
+
+
+def test_sines_and_cosines_of_a_difference_are_compacted_where_they_stand():
+    from gacli.algebra.readable import angle_sums_compacted
+
+    th, tt, b, x, y = sp.symbols("theta theta_T b x y", real=True)
+    # a trailer's constraint: the pair stands beside other uses of θ_T, so the whole does not hold θ − θ_T alone
+    row = b * (sp.sin(th) * sp.cos(tt) - sp.sin(tt) * sp.cos(th)) * y + sp.cos(tt) * x
+    compact = angle_sums_compacted(row)
+    assert sp.sin(th - tt) in compact.atoms(sp.sin) and compact.count_ops() < row.count_ops()
+    point = {th: 0.7, tt: -0.4, b: 1.3, x: 0.2, y: 2.1}
+    assert abs(float((compact - row).subs(point))) < 1e-12

@@ -66,6 +66,7 @@ class Tidy:
         # A pair of angles the expression holds only through their sum or difference
         # (a bead at s on a spinning hoop: s + φ) is written so, as by hand.
         expr = relative(expr, sums=True)
+        expr = angle_sums_compacted(expr)
         candidates = [c for c in (self._readable(expr), self._by_rates(expr), self._over_common(expr))
                       if c is not None]
         # The shortest for a reader, unless another has symbols cancelled out of it
@@ -119,6 +120,22 @@ class Tidy:
         for key in sorted(parts, key=sp.default_sort_key):
             total += self(parts[key]) * key
         return total
+
+
+# A sum is searched for sin x cos y ± cos x sin y only up to this many terms (the search is by pairs).
+COMPACT_TERMS = 8
+
+
+def angle_sums_compacted(expr: sp.Expr) -> sp.Expr:
+    """sin x cos y − sin y cos x as sin(x − y), cos x cos y + sin x sin y as cos(x − y), and the
+    same for sums, wherever such a pair stands in a small sum: as a difference that the whole
+    expression holds (:func:`gacli.algebra.angles.relative`) is written, so is one it holds
+    beside other uses of its angles (a trailer's b (sin θ cos θ_T − sin θ_T cos θ) θ̇)."""
+    from sympy.simplify.fu import TR10i
+
+    if not (expr.has(sp.sin) and expr.has(sp.cos)):
+        return expr
+    return expr.replace(lambda e: e.is_Add and len(e.args) <= COMPACT_TERMS and e.has(sp.sin) and e.has(sp.cos), TR10i)
 
 
 def readable(expr: sp.Expr) -> sp.Expr:
@@ -267,6 +284,16 @@ class _FilePrinter(StrPrinter):
     def _print_Abs(self, expr) -> str:
         return f"abs({self._print(expr.args[0])})"
 
+    # The sign order a textbook uses (:func:`positive_first`, :func:`oriented`), as LaTeX has it too.
+    def _as_ordered_terms(self, expr, order=None):
+        return positive_first(super()._as_ordered_terms(expr, order=order))
+
+    def _print_Mul(self, expr) -> str:
+        turn = turned(expr)
+        if turn is None:
+            return super()._print_Mul(expr)
+        return toggled(super()._print_Mul(turn[1]), turn[0])
+
 
 _PRINTER = _FilePrinter({"order": "lex"})
 
@@ -274,3 +301,74 @@ _PRINTER = _FilePrinter({"order": "lex"})
 def show(expr) -> str:
     """An expression in the system file's grammar (``dot(x)``, ``**``, ``abs``)."""
     return _PRINTER.doprint(expr)
+
+
+# -- sign order for printing -------------------------------------------------------
+
+def positive_first(terms: list) -> list:
+    """The terms of a sum with the first positive one moved to the front: ``I_z - I_y``, not ``-I_y + I_z``."""
+    if not terms or not oriented(terms[0])[0]:
+        return list(terms)
+    for i, term in enumerate(terms):
+        if not oriented(term)[0]:
+            return [term] + list(terms[:i]) + list(terms[i + 1:])
+    return list(terms)
+
+
+def _parameter(term: sp.Expr) -> sp.Symbol | None:
+    """The symbol of ±c·s (c a positive number, s a symbol that is not a rate), else None."""
+    coefficient, rest = term.as_coeff_Mul()
+    if isinstance(rest, sp.Symbol) and not RATE_NAME.match(rest.name) and coefficient.is_nonzero:
+        return rest
+    return None
+
+
+def _reversed_difference(factor: sp.Expr) -> bool:
+    """Whether ``factor`` is a difference of two parameters with the later-sorted one subtracted:
+    ``A - B`` is written ``-(B - A)``, so that a difference reads the same wherever it stands."""
+    if not factor.is_Add or len(factor.args) != 2:
+        return False
+    a, b = factor.args
+    sa, sb = _parameter(a), _parameter(b)
+    if sa is None or sb is None or sa == sb or a.could_extract_minus_sign() == b.could_extract_minus_sign():
+        return False
+    positive, negative = (sa, sb) if b.could_extract_minus_sign() else (sb, sa)
+    return sp.default_sort_key(positive) < sp.default_sort_key(negative)
+
+
+def turned(product: sp.Expr) -> tuple[bool, sp.Expr] | None:
+    """(whether the sign changed, the product) with each difference of parameters in it written with
+    the later-sorted parameter first (``I_z - I_y``); None when there is none to turn."""
+    if not product.is_Mul:
+        return None
+    factors = list(product.args)
+    flips = [i for i, f in enumerate(factors) if _reversed_difference(f)]
+    if not flips:
+        return None
+    for i in flips:
+        factors[i] = -factors[i]
+    # Unevaluated: a number times a sum would be multiplied out again.
+    return len(flips) % 2 == 1, sp.Mul(*factors, evaluate=False)
+
+
+def toggled(text: str, change: bool) -> str:
+    """A printed product with its sign changed when ``change`` (``- x`` → ``x``, ``x`` → ``-x``)."""
+    if not change:
+        return text
+    if text.startswith("-"):
+        return text[1:].lstrip()
+    return "-" + text
+
+
+def oriented(expr: sp.Expr) -> tuple[bool, sp.Expr]:
+    """(negative, magnitude) of ``expr``, its differences of parameters turned (:func:`turned`):
+    ``expr == -magnitude if negative else magnitude``."""
+    from sympy.core.function import _coeff_isneg
+
+    # A sum is negative only when all its terms are: I_z - I_y is not -(I_y - I_z).
+    negative = all(_coeff_isneg(t) for t in expr.args) if expr.is_Add else expr.could_extract_minus_sign()
+    magnitude = -expr if negative else expr
+    turn = turned(magnitude)
+    if turn is None:
+        return negative, magnitude
+    return negative != turn[0], turn[1]

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.display import printed
 from gacli.mechanics.equations import Derivation
-from gacli.algebra import symbols as S
 from gacli.algebra.readable import TOO_LARGE, Tidy, displayable, show
 from gacli.algebra.symbols import rate_name
 
@@ -60,74 +60,46 @@ def freedom(d: Derivation) -> Section:
     ))
 
 
-def rates(d: Derivation, tidy: Tidy) -> Section:
-    lines = [f"{rate_name(n, 1)} = {show(tidy(d.rates.rate(n)))}"
+def rates(d: Derivation) -> Section:
+    lines = [f"{rate_name(n, 1)} = {show(printed.tidy(d.rates.rate(n)))}"
              for n in d.rates.names if n not in d.independent]
     return Section("Rates in terms of the independent rates, eq. (14.7)", tuple(lines) or ("(all rates are independent)",))
 
 
-def gibbs(d: Derivation, tidy: Tidy) -> Section:
-    """G as `gacli gibbs` prints it: from the Gibbs function itself (eqs. 14.17, 14.21)."""
-    from gacli.display.steps import gibbs_polynomial
-
-    return Section(GIBBS_TITLE, (f"G = {show(gibbs_polynomial(d, tidy))} + ...",))
+def gibbs(d: Derivation) -> Section:
+    """G as `gacli gibbs` prints it: the acceleration terms, as every output prints them (eqs. 14.17, 14.21)."""
+    return Section(GIBBS_TITLE, (f"G = {show(printed.gibbs(d))} + ...",))
 
 
 GIBBS_TITLE = "Gibbs function, acceleration terms (eqs. 14.17, 14.21)"
+# Why G ends in "+ ...", said once under it.
+GIBBS_DOTS = "  (+ ... : the terms free of the accelerations, which do not enter eq. (14.19))"
 
 
-def forces(d: Derivation, tidy: Tidy) -> Section:
-    lines = [f"Q_{name} = {show(tidy(q))}" for name, q in zip(d.independent, d.generalized_forces)]
+def forces(d: Derivation) -> Section:
+    c = printed.coefficients(d)
+    lines = [f"Q_{name} = {show(q)}" for name, q in zip(d.independent, c.forces)]
     return Section("Generalized forces, eq. (14.13)", tuple(lines))
 
 
-@dataclass(frozen=True)
-class Coefficients:
-    """The equations' coefficients as printed: M's nonzero entries and Q − F, each tidied once.
-
-    ∂G/∂u̇_s = Σ_r M_sr u̇_r + (Q_s − F_s) (eq. 14.19), so these are also G's
-    coefficients: G = ½ Σ M_rs u̇_r u̇_s + Σ (Q_s − F_s) u̇_s + (terms free of u̇).
-    """
-
-    mass: dict[tuple[int, int], sp.Expr]
-    rest: tuple[sp.Expr, ...]
-    forces: tuple[sp.Expr, ...]
-
-
-def coefficients(d: Derivation, tidy: Tidy) -> Coefficients:
-    # The nonzero entries only, each once: tidying every entry of a row made this ~k² per row.
-    mass = {(i, j): tidy(e) for (i, j), e in sorted(d.mass_matrix.todok().items()) if j >= i and e != 0}
-    mass.update({(j, i): e for (i, j), e in list(mass.items())})
-    rest = tuple(tidy(q - f) for q, f in zip(d.generalized_forces, d.forcing))
-    return Coefficients(mass, rest, tuple(tidy(q) for q in d.generalized_forces))
-
-
-def equations(d: Derivation, c: Coefficients) -> Section:
+def equations(d: Derivation) -> Section:
     lines = []
     for s, name in enumerate(d.independent):
-        terms = [e * d.speed_rates[r] for (i, r), e in sorted(c.mass.items()) if i == s]
-        lhs = sp.Add(*terms) + c.rest[s]
-        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(c.forces[s])}")
+        lhs, rhs = printed.equation(d, s)
+        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(rhs)}")
     return Section("Gibbs-Appell equations, eq. (14.19)", tuple(lines))
 
 
-def gibbs_of(d: Derivation, c: Coefficients, tidy: Tidy) -> Section:
-    """G from the equations' own coefficients: written out when short, else named through them.
-
-    ½ M_ii is read again (``(5 sin² θ + 2)/10``, not ``(sin² θ + 2/5)/2``) when the
-    coefficients are short enough for G to be written out at all.
-    """
-    acc = d.speed_rates
-    short = sum(len(show(e)) for e in (*c.mass.values(), *c.rest)) <= GIBBS_WRITTEN_OUT
-    terms = [(tidy(e / 2) if short else e / 2) * acc[i] ** 2 if i == j else e * acc[i] * acc[j]
-             for (i, j), e in sorted(c.mass.items()) if i <= j]
-    G = show(sp.Add(*terms, *(r * a for r, a in zip(c.rest, acc))))
+def gibbs_of(d: Derivation) -> Section:
+    """G from the equations' own coefficients: written out when short, else named through them."""
+    G = show(printed.gibbs(d))
     if len(G) <= GIBBS_WRITTEN_OUT:
-        return Section(GIBBS_TITLE, (f"G = {G} + ...",))
+        return Section(GIBBS_TITLE, (f"G = {G} + ...", GIBBS_DOTS))
     return Section(GIBBS_TITLE, (
         "G = 1/2*sum(M[r,s]*ddot(u_r)*ddot(u_s)) + sum((Q_s - F_s)*ddot(u_s)) + ...",
         f"  with u = {', '.join(d.independent)}: its coefficients are those of the equations below, "
         f"dG/d(ddot(u_s)) = sum(M[s,r]*ddot(u_r)) + Q_s - F_s; `gacli gibbs` writes it out",
+        GIBBS_DOTS,
     ))
 
 
@@ -137,9 +109,9 @@ def gibbs_of(d: Derivation, c: Coefficients, tidy: Tidy) -> Section:
 GIBBS_WRITTEN_OUT = 2_000
 
 
-def kinematic(d: Derivation, tidy: Tidy) -> Section:
+def kinematic(d: Derivation) -> Section:
     # q̇ = q̇ for an independent coordinate says nothing, and is not printed.
-    lines = [f"{rate_name(n, 1)} = {show(tidy(e))}" for n, e in d.kinematic_equations if e != S.rate(n)]
+    lines = [f"{rate_name(n, 1)} = {show(e)}" for n, e in printed.kinematic(d)]
     return Section("Kinematic equations, eq. (14.20)",
                    tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",))
 
@@ -152,29 +124,37 @@ def derivation_report(d: Derivation) -> tuple[Section, ...]:
     """The results of the chapter's solution procedure (section 14.3)."""
     if not displayable(d):
         return (freedom(d), too_large())
-    c = coefficients(d, Tidy())
-    return (freedom(d), rates(d, Tidy()), gibbs_of(d, c, Tidy()), forces(d, Tidy()), equations(d, c),
-            kinematic(d, Tidy()))
+    return (freedom(d), rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
     if not displayable(d):
         return (too_large(),)
-    return (gibbs(d, Tidy()),)
+    return (gibbs(d),)
 
 
 def steps_report(d: Derivation) -> tuple[Section, ...]:
     """The worked solution (:mod:`gacli.display.steps`) as text sections."""
-    from gacli.display.steps import Equation, worked_solution
+    from gacli.display.steps import worked_solution
 
     if not displayable(d):
         return (freedom(d), too_large())
-    def line(item) -> str:
-        if isinstance(item, Equation):
-            return f"{_side(item.lhs)} = {_side(item.rhs)}"
-        return item
+    return tuple(Section(step.title, tuple(_line(i) for i in step.items)) for step in worked_solution(d))
 
-    return tuple(Section(step.title, tuple(line(i) for i in step.items)) for step in worked_solution(d))
+
+def _line(item) -> str:
+    from gacli.display.steps import Equation, Load, Sentence
+
+    if isinstance(item, Equation):
+        return f"{_side(item.lhs)} = {_side(item.rhs)}"
+    if isinstance(item, Sentence):
+        return item.text
+    if isinstance(item, Load):
+        vectors = " + ".join(f"{_side(v)} ({frame} axes)" for frame, v in item.terms)
+        if item.torque:
+            return f"a torque {vectors} on {item.where}"
+        return f"a force {vectors} at " + (item.where or f"the point {_side(item.position)} (N axes)")
+    return item
 
 
 def _side(expr) -> str:

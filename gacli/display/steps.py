@@ -15,7 +15,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.mechanics.equations import Derivation
-from gacli.mechanics.gibbs import gibbs_entries
+from gacli.display import printed
 from gacli.mechanics.motions import motion_acceleration, motion_velocity
 from gacli.algebra.readable import STEP_BUDGET_OPS, Tidy, show
 
@@ -24,13 +24,61 @@ from gacli.algebra.readable import STEP_BUDGET_OPS, Tidy, show
 class Equation:
     lhs: sp.Expr
     rhs: sp.Expr
-    label: str = ""
+    label: str = ""  # the chapter's number for it, shared by the block it stands in
+    head: sp.Expr | None = None  # the acceleration u̇_s of ∂G/∂u̇_s = Q_s, whose left side is written out
+
+
+@dataclass(frozen=True)
+class Formula:
+    """Mathematics inside a sentence that is not a SymPy expression: its text and its LaTeX."""
+
+    text: str
+    tex: str
+
+
+@dataclass(frozen=True)
+class Names:
+    """A list of declared names inside a sentence (``x, y, yaw``; LaTeX ``x, y, \\psi``)."""
+
+    names: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Sentence:
+    """Prose (str) and mathematics (a SymPy expression, :class:`Formula`, :class:`Names`) in turn."""
+
+    parts: tuple
+
+    @property
+    def text(self) -> str:
+        return "".join(_text(p) for p in self.parts)
+
+
+def _text(part) -> str:
+    if isinstance(part, str):
+        return part
+    if isinstance(part, Formula):
+        return part.text
+    if isinstance(part, Names):
+        return ", ".join(part.names) or "none"
+    return show(part)
+
+
+@dataclass(frozen=True)
+class Load:
+    """A force (at ``where``) or a torque (on ``where``), as the file gave it: its components along
+    the axes of each frame named (``terms``), and the position of its point in N when the file gave one."""
+
+    torque: bool
+    terms: tuple[tuple[str, sp.Matrix], ...]
+    where: str
+    position: sp.Matrix | None = None
 
 
 @dataclass(frozen=True)
 class Step:
     title: str
-    items: tuple[str | Equation, ...]
+    items: tuple[str | Sentence | Equation | Load, ...]
 
 
 def variation(name: str) -> sp.Symbol:
@@ -45,7 +93,7 @@ def worked_solution(d: Derivation, budget: int = STEP_BUDGET_OPS) -> tuple[Step,
         rate_relations(d, Tidy(budget)),
         accelerations_and_gibbs(d, Tidy(budget)),
         virtual_work(d, Tidy(budget)),
-        equations_of_motion(d, Tidy(budget)),
+        equations_of_motion(d),
     )
 
 
@@ -54,31 +102,34 @@ def degrees_of_freedom(d: Derivation) -> Step:
     n, p, ell = len(s.coordinates), len(s.quasi_coordinates), d.rates.constraints_used
     dq = sum(1 for q in s.quasi_coordinates if q.differential is not None)
     items = [
-        f"n = {n} coordinates: {_names(s.coordinates)}",
-        f"p = {p} quasi-coordinates: {_names(s.quasi_coordinates)}"
-        + (f", of which d = {dq} are defined by a differential" if p else ""),
-        f"l = {ell} constraints (eq. 14.1)",
-        f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k} degrees of freedom",
-        f"independent: {', '.join(d.independent)}"
-        + (" (chosen automatically: the earliest declared valid set)" if d.rates.chosen_automatically else ""),
+        Sentence((Formula(f"n = {n}", f"n = {n}"), " coordinates: ", _names(s.coordinates))),
+        Sentence((Formula(f"p = {p}", f"p = {p}"), " quasi-coordinates: ", _names(s.quasi_coordinates))
+                 + ((", of which ", Formula(f"d = {dq}", f"d = {dq}"), " are defined by a differential") if p else ())),
+        Sentence((Formula(f"l = {ell}", f"l = {ell}"), " constraints (eq. 14.1)")),
+        Sentence((Formula(f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k}",
+                          f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k}"), " degrees of freedom")),
+        Sentence(("independent: ", Names(tuple(d.independent)))
+                 + ((" (chosen automatically: the earliest declared valid set)",) if d.rates.chosen_automatically else ())),
     ]
     return Step("Step 1. Degrees of freedom", tuple(items))
 
 
-def _names(items) -> str:
-    return ", ".join(i.name for i in items) or "none"
+def _names(items) -> Names:
+    return Names(tuple(i.name for i in items))
 
 
 def rate_relations(d: Derivation, tidy: Tidy) -> Step:
     s, names = d.system, d.rates.names
     rates = {n: S.rate(n) for n in names}
-    items: list[str | Equation] = ["The relations among the rates, from the constraints (14.1) and the quasi-coordinates (14.2):"]
+    quasi = any(q.differential is not None for q in s.quasi_coordinates)
+    items: list = ["The relations among the rates, from the constraints (14.1)"
+                   + (" and the quasi-coordinates (14.2):" if quasi else ":")]
     for c in s.constraints:
         if c.rates is not None:  # not linear in the rates: shown as written (docs/nonlinear.md)
             items.append(Equation(c.rates.relation, sp.S.Zero, ""))
             continue
         lhs = sum((coef * rates[n] for n, coef in c.form.coefficients), sp.S.Zero) + c.form.dt
-        items.append(Equation(lhs, sp.S.Zero, "14.1"))
+        items.append(Equation(printed.tidy(lhs), sp.S.Zero, "14.1"))
     for q in s.quasi_coordinates:
         if q.differential is not None:
             rhs = sum((coef * rates[n] for n, coef in q.differential.coefficients), sp.S.Zero) + q.differential.dt
@@ -86,16 +137,19 @@ def rate_relations(d: Derivation, tidy: Tidy) -> Step:
     dependent = [n for n in names if n not in d.independent]
     if dependent:
         items.append("Solved for the dependent rates in terms of the independent ones (eq. 14.7):")
-        items += [Equation(rates[n], tidy(d.rates.rate(n)), "14.7") for n in dependent]
-        items.append("so virtual displacements satisfy (eqs. 14.8, 14.9)" + (
-            "; for a rate given by a relation nonlinear in the rates, ṙ = f(q, u, t), Chetaev's rule "
-            "δr = Σ ∂f/∂u_s δq_s:" if d.rates.nonlinear else ":"))
+        items += [Equation(rates[n], printed.tidy(d.rates.rate(n)), "14.7") for n in dependent]
+        items.append(Sentence(("so virtual displacements satisfy (eqs. 14.8, 14.9)",) + ((
+            "; for a rate given by a relation nonlinear in the rates, ",
+            Formula("dot(r) = f(q, u, t)", r"\dot{r} = f(q, u, t)"), ", Chetaev's rule ",
+            Formula("δr = Σ ∂f/∂u_s δq_s", r"\delta r = \sum_s \frac{\partial f}{\partial u_s}\, \delta q_s"), ":",
+        ) if d.rates.nonlinear else (":",))))
         for n in dependent:
             i = names.index(n)
             rhs = sum((d.beta[i, j] * variation(u) for j, u in enumerate(d.independent)), sp.S.Zero)
             items.append(Equation(variation(n), tidy(rhs), "14.9"))
     else:
-        items.append("Every rate is independent: ṙ = u.")
+        items.append(Sentence(("Every rate is independent: the speeds are the rates of the coordinates, ",
+                               Formula("u_s = dot(q_s)", r"u_s = \dot{q}_s"), ".")))
     return Step("Step 2a. Rates in terms of the independent rates", tuple(items))
 
 
@@ -110,92 +164,87 @@ def accelerations_and_gibbs(d: Derivation, tidy: Tidy) -> Step:
     for motion in d.motions:
         body = motion.body
         a = [tidy.collected(e, acc) for e in motion_acceleration(motion.linear, acc)]
-        items.append(f"Acceleration of {body.name} (centre of mass), components along {_linear_axes(motion)}:")
+        items.append(Sentence(("Acceleration of ", body.name, " (centre of mass), components along ")
+                              + _linear_axes(motion) + (":",)))
         items.append(Equation(sp.Symbol(f"a_{body.name}"), sp.Matrix([a]).T))
         whole += body.mass / 2 * sum(c**2 for c in a)
         if motion.angular is not None:
             w = motion_velocity(motion.angular, d.speeds)
             alpha = [tidy.collected(e, acc) for e in motion_acceleration(motion.angular, acc)]
-            items.append(f"Angular acceleration of {body.name}, {_angular_axes(motion)}:")
+            items.append(Sentence(("Angular acceleration of ", body.name, ", ") + _angular_axes(motion) + (":",)))
             items.append(Equation(sp.Symbol(f"alpha_{body.name}"), sp.Matrix([alpha]).T))
             I, al, wv = body.inertia, sp.Matrix(alpha), sp.Matrix([tidy(e) for e in w])
             whole += (al.T * I * al)[0] / 2 + tidy((al.T * wv.cross(I * wv))[0])
     G = sp.Symbol("G")
+    rigid = any(m.angular is not None for m in d.motions)
     items.append("The Gibbs function (eq. 14.17, Koenig's analogue eq. 14.21 for rigid bodies):")
-    items.append(Equation(G, whole, "14.21"))
+    items.append(Equation(G, whole, "14.21" if rigid else "14.17"))
+    # G = G_2 + G_1 + G_0 in the chapter, unnumbered: eq. (14.19) differentiates G_2 + G_1.
     items.append("and without the terms free of accelerations, which do not enter eq. (14.19):")
-    items.append(Equation(G, gibbs_polynomial(d, tidy), "14.19"))
+    items.append(Equation(G, printed.gibbs(d)))
     return Step("Step 2b. Accelerations and the Gibbs function", tuple(items))
 
 
-def _linear_axes(motion) -> str:
+def _linear_axes(motion) -> tuple:
     if motion.heading == 0:
-        return "the inertial axes"
-    return f"the inertial axes turned by {show(motion.heading)} about z (a·a is the same in any axes)"
+        return ("the inertial axes",)
+    return ("the inertial axes turned by ", motion.heading, " about ", Formula("z", "z"), " (",
+            Formula("a·a", r"\mathbf{a} \cdot \mathbf{a}"), " is the same in any axes)")
 
 
-def _angular_axes(motion) -> str:
+def _angular_axes(motion) -> tuple:
     if motion.spin is None:
-        return "body axes"
+        return ("body axes",)
     axis, angle = motion.spin
-    return (f"body axes turned back by {show(angle)} about {axis}, about which the inertia is symmetric "
-            "(the body's non-spinning axes)")
-
-
-def gibbs_polynomial(d: Derivation, tidy: Tidy) -> sp.Expr:
-    """The acceleration terms of G, ½ Σ H_ii u̇_i² + Σ_{i<j} H_ij u̇_i u̇_j + Σ g_i u̇_i, tidied.
-
-    Only the nonzero coefficients are visited and the sum is made once:
-    adding k² terms one by one to a growing sum cost time ~k³ on wide systems.
-    """
-    H, g = gibbs_entries(d.gibbs, d.speed_rates)
-    acc = d.speed_rates
-    terms = []
-    for (i, j), h in sorted(H.items()):
-        terms.append(tidy(h / 2) * acc[i] ** 2 if i == j else tidy(h) * acc[i] * acc[j])
-    terms += [tidy(c) * acc[i] for i, c in sorted(g.items())]
-    return sp.Add(*terms)
+    return ("body axes turned back by ", angle, " about ", Formula(axis, axis),
+            ", about which the inertia is symmetric (the body's non-spinning axes)")
 
 
 def virtual_work(d: Derivation, tidy: Tidy) -> Step:
     s = d.system
-    written = sp.S.Zero
+    if s.work is None and not s.forces and not s.torques and (s.frames is None or not s.frames.loads) and s.potential == 0:
+        items: list = [Sentence(("No load does work in a virtual displacement (", Formula("δt = 0", r"\delta t = 0"),
+                                 "): every generalized force is zero (eq. 14.13).",))]
+        items += [Equation(sp.Symbol(f"Q_{n}"), sp.S.Zero, "14.13") for n in d.independent]
+        return Step("Step 3. Virtual work and generalized forces", tuple(items))
+    items = [Sentence(("The work done in a virtual displacement (", Formula("δt = 0", r"\delta t = 0"), "):"))]
     if s.work is not None:
-        written += sum((c * variation(n) for n, c in s.work.coefficients), sp.S.Zero)
-    items: list[str | Equation] = ["The work done in a virtual displacement (δt = 0):"]
-    if s.work is not None:
+        written = sum((c * variation(n) for n, c in s.work.coefficients), sp.S.Zero)
         items.append(Equation(sp.Symbol("δW_work"), written))
-    for f in s.forces:
-        items.append(f"a force {list(f.vector)} at {list(f.point)}")
-    for tq in s.torques:
-        items.append(f"a torque {list(tq.vector)} on {tq.body} (body axes)")
+    items += loads(s, tidy)
     if s.potential != 0:
         items.append(Equation(sp.Symbol("V"), s.potential))
-    items.append("With eq. (14.9) every δ is a combination of the independent ones, δW = Σ Q_s δq_s (eq. 14.13):")
-    reduced = sum((tidy(q) * variation(n) for n, q in zip(d.independent, d.generalized_forces)), sp.S.Zero)
+    items.append(Sentence(("With eq. (14.9) every ", Formula("δ", r"\delta"), " is a combination of the independent ones, ",
+                           Formula("δW = Σ Q_s δq_s", r"\delta W = \sum_s Q_s \, \delta q_s"), " (eq. 14.13):")))
+    forces = printed.coefficients(d).forces
+    reduced = sp.Add(*(q * variation(n) for n, q in zip(d.independent, forces)))
     items.append(Equation(sp.Symbol("δW"), reduced, "14.13"))
-    items += [Equation(sp.Symbol(f"Q_{n}"), tidy(q), "14.13") for n, q in zip(d.independent, d.generalized_forces)]
+    items += [Equation(sp.Symbol(f"Q_{n}"), q, "14.13") for n, q in zip(d.independent, forces)]
     return Step("Step 3. Virtual work and generalized forces", tuple(items))
 
 
-def equations_of_motion(d: Derivation, tidy: Tidy) -> Step:
-    items: list[str | Equation] = ["∂G/∂u̇_s = Q_s (eq. 14.19):"]
-    items += [equation_of_motion(d, s, tidy) for s in range(d.k)]
+def loads(s, tidy: Tidy) -> list[Load]:
+    """The forces and torques in the frames the file wrote them in, their components read as every expression is."""
+    def column(triple) -> sp.Matrix:
+        return sp.Matrix([tidy(sp.sympify(c)) for c in triple])
+
+    if s.frames is not None:
+        return [Load(load.torque, tuple((frame, column(v)) for frame, v in load.vector.terms),
+                     load.body if load.torque else (load.point or ""))
+                for load in s.frames.loads]
+    out = [Load(False, (("N", column(f.vector)),), "", column(f.point)) for f in s.forces]
+    return out + [Load(True, ((t.body, column(t.vector)),), t.body) for t in s.torques]
+
+
+def equations_of_motion(d: Derivation) -> Step:
+    items: list = [Sentence((Formula("∂G/∂u̇_s = Q_s", r"\partial G / \partial \dot{u}_s = Q_s"), " (eq. 14.19):"))]
+    items += [Equation(*printed.equation(d, s), "14.19", d.speed_rates[s]) for s in range(d.k)]
     # q̇ = q̇ for an independent coordinate says nothing, and is not printed.
-    kinematic = [Equation(S.rate(n), tidy(e), "14.20") for n, e in d.kinematic_equations if e != S.rate(n)]
+    kinematic = [Equation(S.rate(n), e, "14.20") for n, e in printed.kinematic(d)]
     if kinematic:
         items.append("with the kinematic equations (eq. 14.20):")
         items += kinematic
     else:
-        items.append("Every coordinate is independent: the kinematic equations (14.20) say only q̇ = q̇.")
+        items.append("Every coordinate is independent: its rate is one of the speeds, and there is no "
+                     "kinematic equation (14.20) to add.")
     return Step("Step 4. Equations of motion", tuple(items))
-
-
-def equation_of_motion(d: Derivation, s: int, tidy: Tidy) -> Equation:
-    """∂G/∂u̇_s = Q_s written as Σ_r M_sr u̇_r + (Q_s − F_s) = Q_s."""
-    # Zero entries are skipped and the sum made once: tidying every entry of a
-    # row, and growing the sum a term at a time, made this ~k² per row.
-    row = d.mass_matrix.row(s).todok()
-    terms = [tidy(row[0, r]) * d.speed_rates[r] for _, r in sorted(row)]
-    lhs = sp.Add(*terms) + tidy(d.generalized_forces[s] - d.forcing[s])
-    return Equation(lhs, tidy(d.generalized_forces[s]), "14.19")

@@ -16,22 +16,9 @@ from __future__ import annotations
 import os
 import textwrap
 
-import sympy as sp
-
 from gacli.algebra import symbols as S
-from gacli.emit.latex_layout import (
-    WIDE,
-    ZERO,
-    Section,
-    Term,
-    align,
-    half_term,
-    product_term,
-    signed_terms,
-    sum_rows,
-    tidy,
-    typeset_width,
-)
+from gacli.display import printed
+from gacli.emit.latex_layout import Section, align, expression_rows, grouped, rows
 from gacli.emit.latex_printer import GacliLatexPrinter, printer_for
 from gacli.emit.latex_text import TEXT_LINE, tex_text
 from gacli.read.textsafe import one_line
@@ -39,8 +26,6 @@ from gacli.mechanics.equations import Derivation
 from gacli.model import System
 from gacli.algebra.readable import TOO_LARGE, displayable
 from gacli.version import __version__
-
-_LABEL = 4  # the room a label ∂G/∂ü takes from the lines of an equation, beyond that of G
 
 
 def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool = False) -> dict[str, str]:
@@ -72,8 +57,9 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
         equations = _equation_rows(derivation, printer)
         sections = [
             _gibbs_section(derivation, printer, equations),
-            Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer)),
-            Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer), equations, gap="[1ex]"),
+            Section("Generalized forces (eq. 14.13)", "", _force_rows(derivation, printer), tag="14.13"),
+            Section("Gibbs-Appell equations (eq. 14.19)", _equations_note(derivation, printer), equations, gap="[1ex]",
+                    tag="14.19"),
             _kinematic_section(derivation, printer),
         ]
     lines = _header(system)
@@ -105,7 +91,7 @@ def _comment(label: str, text: str) -> list[str]:
 def _fragment(sections) -> list[str]:
     lines: list[str] = []
     for section in sections:
-        comment = section.title + (f". {section.note}" if section.note else "")
+        comment = ". ".join(part for part in (section.title, section.note) if part)
         # Free text comes in lines (see _wrap): each must stay a comment.
         lines += [""] + [f"% {line}" for line in comment.split("\n")]
         lines += [r"\noindent " + section.note] if section.shown else []
@@ -118,6 +104,10 @@ def _document(system: System, sections) -> list[str]:
     lines = [
         r"\documentclass{article}",
         r"\usepackage{amsmath}",
+        # A block longer than a page goes on over the next, as a book's does.
+        r"\allowdisplaybreaks",
+        # Prose with long unbreakable words (a file name, quasi-coordinates) is spaced out, not run into the margin.
+        r"\setlength{\emergencystretch}{3em}",
         r"\begin{document}",
         "",
         r"\begin{center}",
@@ -159,67 +149,35 @@ def _equations_note(derivation: Derivation, printer: GacliLatexPrinter) -> str:
 # -- the blocks --------------------------------------------------------------
 
 def _gibbs_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[str]:
-    """G = ½ Σ H_ij ü_i ü_j + Σ g_i ü_i + … grouped by the accelerations.
-
-    H and g are the equations' own coefficients, ∂G/∂ü_s = Σ M_sr ü_r + Q_s − F_s
-    (eq. 14.19), tidied once for both blocks, as the text report reads them.
-    """
-    M, rest = derivation.mass_matrix, _rest(derivation)
-    a = derivation.speed_rates
-    k = len(a)
-    terms = [t for i in range(k) if (t := half_term(tidy(M[i, i]), a[i] ** 2, printer))]
-    pairs = [(M[i, j], a[i] * a[j]) for i in range(k) for j in range(i + 1, k)] + list(zip(rest, a))
-    for c, m in pairs:
-        terms += _breakable_product(tidy(c), m, printer)
-    terms.append((False, r"\dots"))
-    return sum_rows("G", terms)
-
-
-def _rest(derivation: Derivation) -> list[sp.Expr]:
-    """Q − F of each equation: the acceleration-free part of ∂G/∂ü."""
-    return [q - f for q, f in zip(derivation.generalized_forces, derivation.forcing)]
-
-
-def _breakable_product(coefficient: sp.Expr, monomial: sp.Expr, printer: GacliLatexPrinter) -> list[Term]:
-    """coefficient · monomial as one term, or, when that is wider than a line (an unequal-moment
-    ball's g_i), term by term of the expanded coefficient, each times the monomial, so that lines
-    can break."""
-    term = product_term(coefficient, monomial, printer)
-    if term is None or typeset_width(term[1]) <= WIDE or not (spread := sp.expand(coefficient)).is_Add:
-        return [term] if term else []
-    parts = printer._as_ordered_terms(spread, order=None)
-    return [t for part in parts if (t := product_term(part, monomial, printer))]
+    """G = ½ Σ M_ij ü_i ü_j + Σ (Q_i − F_i) ü_i + …, grouped by the accelerations, as every output prints it
+    (:func:`gacli.display.printed.gibbs`)."""
+    out = rows("G", grouped(printed.gibbs(derivation)), printer)
+    out[-1] += r" + \dots"
+    return out
 
 
 def _force_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
-    return [
-        sum_rows(f"Q_{{{printer.doprint(S.value(name))}}}", signed_terms(tidy(Q), printer) or ZERO)
-        for name, Q in zip(derivation.independent, derivation.generalized_forces)
-    ]
+    forces = printed.coefficients(derivation).forces
+    return [expression_rows(f"Q_{{{printer.doprint(S.value(name))}}}", Q, printer)
+            for name, Q in zip(derivation.independent, forces)]
 
 
 def _equation_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
     """∂G/∂u̇_s = Σ_r M_sr u̇_r + (Q_s − F_s) = Q_s for each s."""
-    M, Q, rest = derivation.mass_matrix, derivation.generalized_forces, _rest(derivation)
-    a = derivation.speed_rates
     groups = []
-    for s, u in enumerate(a):
-        terms = [t for r in range(len(a)) if (t := product_term(tidy(M[s, r]), a[r], printer))]
-        terms += signed_terms(tidy(rest[s]), printer, WIDE - _LABEL)
+    for s, u in enumerate(derivation.speed_rates):
+        lhs, rhs = printed.equation(derivation, s)
         label = rf"\frac{{\partial G}}{{\partial {printer.doprint(u)}}}"
-        groups.append(sum_rows(label, terms or ZERO, signed_terms(tidy(Q[s]), printer) or ZERO))
+        groups.append(rows(label, grouped(lhs), printer, grouped(rhs)))
     return groups
 
 
 def _kinematic_section(derivation: Derivation, printer: GacliLatexPrinter) -> "Section":
-    rows = _kinematic_rows(derivation, printer)
-    note = "" if rows else "Every coordinate is independent: its rate is one of the speeds."
-    return Section("Kinematic equations (eq. 14.20)", note, rows)
+    rows_ = _kinematic_rows(derivation, printer)
+    note = "" if rows_ else "Every coordinate is independent: its rate is one of the speeds."
+    return Section("Kinematic equations (eq. 14.20)", note, rows_, tag="14.20" if rows_ else "")
 
 
 def _kinematic_rows(derivation: Derivation, printer: GacliLatexPrinter) -> list[list[str]]:
     # An independent coordinate's q̇ = q̇ says nothing: left out, as by hand.
-    return [
-        sum_rows(printer.doprint(S.rate(name)), signed_terms(tidy(rate), printer) or ZERO)
-        for name, rate in derivation.kinematic_equations if rate != S.rate(name)
-    ]
+    return [expression_rows(printer.doprint(S.rate(name)), rate, printer) for name, rate in printed.kinematic(derivation)]

@@ -14,12 +14,14 @@ from collections.abc import Mapping
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from gacli.algebra.readable import oriented, positive_first, toggled, turned
 from gacli.algebra.symbols import RATE_NAME
 from gacli.model import System
 from gacli.read.texsafe import is_printable_name
 
 _RATE = RATE_NAME
 _DIFFERENTIAL = re.compile(r"^d\[(.+)\]$")
+_SUBSCRIPTED = re.compile(r"^(\\?[A-Za-z]+)(_(?:[A-Za-z0-9]|\{[^{}]*\}))$")
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 
 
@@ -97,7 +99,9 @@ class GacliLatexPrinter(LatexPrinter):
     def _decorated(self, base: str, order: int) -> str:
         """The base name's LaTeX with ``order`` dots over its head, not over its subscripts."""
         if base in self._names:
-            head, tail = self._names[base], ""
+            # The dots go over the letter of a latex: name, not over its subscript (\dot{\theta}_R).
+            parts = _SUBSCRIPTED.match(self._names[base])
+            head, tail = (parts[1], parts[2]) if parts else (self._names[base], "")
         else:
             head, supers, subs = self._split_super_sub(base)
             tail = ("^{%s}" % " ".join(supers) if supers else "") + ("_{%s}" % " ".join(subs) if subs else "")
@@ -110,6 +114,26 @@ class GacliLatexPrinter(LatexPrinter):
         if order in _DOTS:
             return f"{_DOTS[order]}{{{head}}}{tail}"
         return f"{{{head}}}^{{({order})}}{tail}"
+
+    # The sign order a textbook uses, as the text output has it (gacli.algebra.readable).
+    def _as_ordered_terms(self, expr, order=None):
+        return positive_first(super()._as_ordered_terms(expr, order=order))
+
+    def _print_Add(self, expr, order=None) -> str:
+        tex = ""
+        for i, term in enumerate(self._as_ordered_terms(expr, order=order)):
+            negative, magnitude = oriented(term)
+            term_tex = self._print(magnitude)
+            if self._needs_add_brackets(magnitude):
+                term_tex = rf"\left({term_tex}\right)"
+            tex += ("- " if negative else "") + term_tex if i == 0 else (" - " if negative else " + ") + term_tex
+        return tex
+
+    def _print_Mul(self, expr) -> str:
+        turn = turned(expr)
+        if turn is None:
+            return super()._print_Mul(expr)
+        return toggled(super()._print_Mul(turn[1]), turn[0])
 
     def _print_atan2(self, expr: sp.Expr, exp: str | None = None) -> str:
         args = ", ".join(self._print(a) for a in expr.args)
