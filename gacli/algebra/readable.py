@@ -61,7 +61,9 @@ class Tidy:
         # The identity first, whatever the size: it bounds its own work, and a
         # large expression is where sin² + cos² costs the reader most.
         expr = trig.reduce(expr)
-        if not is_small(expr, FACTOR_NODES):
+        if not is_small(expr, FACTOR_NODES) or self.spent >= self.budget:
+            # Past the budget, shown as derived: taking out common factors and collecting on the
+            # rates cost a 6-link chain's printout 20 s past it, for a few characters.
             return expr
         # A pair of angles the expression holds only through their sum or difference
         # (a bead at s on a spinning hoop: s + φ) is written so, as by hand.

@@ -47,10 +47,14 @@ def coefficients(d: Derivation) -> Coefficients:
     if _LAST and _LAST[0] is d:
         return _LAST[1]
     # The nonzero entries only, each once: tidying every entry of a row made this ~k² per row.
-    mass = {(i, j): tidy(e) for (i, j), e in sorted(d.mass_matrix.todok().items()) if j >= i and e != 0}
+    # One budget for all of them (readable.STEP_BUDGET_OPS operations handed to simplify), in a
+    # fixed order: a large system's coefficients past it are shown as derived, and what a
+    # reader gets does not depend on the machine; text and LaTeX print these same ones.
+    budgeted = Tidy()
+    mass = {(i, j): budgeted(e) for (i, j), e in sorted(d.mass_matrix.todok().items()) if j >= i and e != 0}
     mass.update({(j, i): e for (i, j), e in list(mass.items())})
-    rest = tuple(tidy(q - f) for q, f in zip(d.generalized_forces, d.forcing))
-    c = Coefficients(mass, rest, tuple(tidy(q) for q in d.generalized_forces))
+    rest = tuple(budgeted(q - f) for q, f in zip(d.generalized_forces, d.forcing))
+    c = Coefficients(mass, rest, tuple(budgeted(q) for q in d.generalized_forces))
     _LAST[:] = [d, c]
     return c
 
