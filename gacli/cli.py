@@ -14,8 +14,8 @@ from typing import Annotated, Optional
 
 import typer
 
-from gacli.version import __version__
-from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats
+from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, show_version
+from gacli.cli_sweep import register as register_sweep
 
 app = typer.Typer(
     name="gacli",
@@ -23,7 +23,7 @@ app = typer.Typer(
     help="Derive equations of motion by the Gibbs-Appell method.",
     epilog="gacli derive systems/sphere_on_turntable.yaml",
     no_args_is_help=True,
-    add_completion=False,
+    add_completion=True,  # --install-completion, --show-completion (docs/shell.md)
     pretty_exceptions_show_locals=False,
     rich_markup_mode=None,
 )
@@ -111,16 +111,10 @@ def _derive(path: Path, state, for_code: bool = False):
         return derive(system, progress=step)
 
 
-def _version(value: bool) -> None:
-    if value:
-        typer.echo(f"gacli {__version__}")
-        raise typer.Exit()
-
-
 @app.callback()
 def _main(
     version: Annotated[
-        Optional[bool], typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")
+        Optional[bool], typer.Option("--version", "-V", callback=show_version, is_eager=True, help="Show the version and exit.")
     ] = None,
 ) -> None:
     """Derive equations of motion by the Gibbs-Appell method."""
@@ -393,6 +387,9 @@ def verify(
         console.raw("\n".join(lines))
         if not report.passed:
             raise typer.Exit(code=1)
+
+
+register_sweep(app, example, _boundary, _budget, _derive)
 
 
 def main() -> None:

@@ -58,6 +58,15 @@ class Command(_ExampleLast, TyperCommand):
                 param.__class__ = _PlainArgument
 
 
+def show_version(value: bool) -> None:
+    """``--version``, ``-V``: the version, and nothing else."""
+    from gacli.version import __version__
+
+    if value:
+        typer.echo(f"gacli {__version__}")
+        raise typer.Exit()
+
+
 def example(command_line: str) -> dict:
     """The keyword arguments of ``app.command`` for a command whose help ends with ``command_line``."""
     return {"cls": Command, "epilog": command_line}
