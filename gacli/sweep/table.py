@@ -4,8 +4,7 @@ CSV floats are written in shortest round-trip form (``repr``), NaN as
 ``nan``, booleans as ``true``/``false``: pandas, polars and a spreadsheet all
 read them back exactly. A path ending in ``.parquet`` is written with
 pyarrow (float64, bool and string columns), an optional extra
-(``pip install 'gacli[sweep]'`` installs Dask; pyarrow is ``pip install
-pyarrow``). Either file is written to a temporary name and renamed.
+(``pip install 'gacli[parquet]'``). Either file is written to a temporary name and renamed.
 """
 
 from __future__ import annotations
@@ -84,6 +83,6 @@ def _pyarrow():
         import pyarrow
         import pyarrow.parquet
     except ImportError:
-        raise SweepError("a .parquet table needs pyarrow, which is not installed: pip install pyarrow "
+        raise SweepError("a .parquet table needs pyarrow, which is not installed: pip install 'gacli[parquet]' "
                          "(or write a .csv)") from None
     return pyarrow, pyarrow.parquet

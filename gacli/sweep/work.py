@@ -23,6 +23,7 @@ from gacli.errors import GacliError
 from gacli.mechanics.equations import Derivation
 
 MODES = ("linearize", "simulate")
+STABLE_MARGIN = 1e-9    # "stable": every real part below -1e-9 times max(1, the largest |eigenvalue|)
 
 Value = float | bool | str
 
@@ -88,7 +89,9 @@ def _linearize(job: Job, point: Sequence[float]) -> tuple[Value, ...]:
     eigenvalues = result.eigenvalues(list(task.states) or None)
     largest = float(max(eigenvalues.real))
     pairs = [float(v) for value in eigenvalues for v in (value.real, value.imag)]
-    return (largest, bool(largest < 0), *pairs, "")
+    # A real part within rounding of zero (a conservative system's) is not a decay: only a clear one counts.
+    margin = STABLE_MARGIN * max(1.0, float(max(abs(eigenvalues))))
+    return (largest, bool(largest < -margin), *pairs, "")
 
 
 def resolved_parameters(system, given: Mapping[str, float]) -> dict[str, float]:
