@@ -83,7 +83,7 @@ import sys as _sys
 import types as _types
 
 _CALLABLE_MODULES = ("linearize", "simulate")
-__all__ += ["linearize", "simulate"]
+__all__ = sorted([*__all__, "linearize", "simulate"])
 
 
 class _CallableModule(_types.ModuleType):

@@ -14,7 +14,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, show_version
+from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, plain_report, show_version
 from gacli.cli_sweep import register as register_sweep
 
 app = typer.Typer(
@@ -128,7 +128,7 @@ def derive(
         help=f"Output form: {', '.join(FORMATS)}.")] = "text",
     output: Annotated[Optional[Path], typer.Option(
         "--output", "-o", metavar="PATH",
-        help="Write here instead of stdout (a directory for C: NAME.h and NAME.c).")] = None,
+        help="Write here instead of stdout (a directory for C: NAME.h and NAME.c; NAME.txt for text).")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
@@ -144,6 +144,7 @@ def derive(
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
+                files = {f"{derivation.system.name}.txt": plain_report(title, sections)}
             else:
                 from gacli.api import emit
 
@@ -152,7 +153,7 @@ def derive(
                     options = {"note": console.note}
                 files = emit(derivation, format, **options)
         # Printed once the work is done: running out of time never leaves half an output.
-        if format == "text":
+        if format == "text" and output is None:
             console.sections(title, sections)
         elif output is None:
             for _, text in sorted(files.items()):
