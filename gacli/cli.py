@@ -304,9 +304,9 @@ def simulate(
             for path in write_files({csv.name: sim.to_csv(result)}, csv):
                 simulate_console.wrote(path)
         if plot is not None:
-            from gacli.simulate.plot import plot as draw
+            from gacli.simulate.plot import plot as draw, state_units
 
-            simulate_console.wrote(draw(result, plot, spec.show, spec.phase))
+            simulate_console.wrote(draw(result, plot, spec.show, spec.phase, state_units(derivation.system)))
         simulate_console.summary(result)
 
 
