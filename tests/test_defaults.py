@@ -16,7 +16,10 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import derived
+from typer.testing import CliRunner
+
+from conftest import SYSTEMS, derived
+from gacli.cli import app
 from gacli.emit import emit
 from gacli.emit.naming import layout
 from test_bicycle import REAR_RADIUS, reference
@@ -84,7 +87,10 @@ int main(void)
 def bicycle_c(tmp_path_factory):
     """The bicycle's C built once: a program that integrates from the defaults, and a shared library."""
     directory = tmp_path_factory.mktemp("bicycle_c")
-    source = write_c(derived(BICYCLE), directory)
+    written = CliRunner().invoke(app, ["derive", str(SYSTEMS / f"{BICYCLE}.yaml"), "--format", "c",
+                                       "--output", str(directory)])
+    assert written.exit_code == 0, written.output
+    source = directory / f"{BICYCLE}.c"
     main = directory / "main.c"
     main.write_text(MAIN % {"t_end": T_END, "steps": STEPS, "roll": ROLL0, "rate": SPEED / REAR_RADIUS})
     program, library = directory / "bicycle", directory / "libbicycle.so"
@@ -215,8 +221,10 @@ def test_octave_defaults_returns_the_files_values(spare, tmp_path):
     from conftest import require_tool
 
     octave = require_tool("octave")
-    for name, text in emit(spare, "octave").items():
-        (tmp_path / name).write_text(text, encoding="utf-8")
+    (tmp_path / "spare.yaml").write_text(SPARE)
+    written = CliRunner().invoke(app, ["derive", str(tmp_path / "spare.yaml"), "--format", "octave",
+                                       "--output", str(tmp_path)])
+    assert written.exit_code == 0, written.output
     script = f"cd('{tmp_path}'); p = spare_defaults(); printf('%.17g\\n', p);"
     run = subprocess.run([octave, "--no-gui", "--no-window-system", "--quiet", "--eval", script],
                          capture_output=True, text=True, timeout=120)
