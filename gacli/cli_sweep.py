@@ -118,6 +118,8 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     plan = S.plan(**plan_options)
     if output is not None:
         S.check_path(output)
+    if scheduler:
+        S.require_distributed()   # a missing extra is said before the derivation, not after
     spec = _spec(mode, options)
     states = [n.strip() for n in options["states"].split(",") if n.strip()] if options["states"] else []
     with _SHARED["budget"](file, timeout) as state:

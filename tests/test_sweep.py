@@ -192,3 +192,24 @@ def test_the_methods_and_timeout_literals_agree_with_the_library():
 
     assert cli_sweep.METHODS == simulate.METHODS
     assert cli_sweep.DEFAULT_TIMEOUT == DEFAULT_TIMEOUT
+
+
+def test_a_random_sample_through_the_cli_is_reproducible_and_in_bounds():
+    args = ["sweep", DISK, "--run", "linearize", "--random", "dot(spin)=-8:-4", "--random", "r=0.25:0.35",
+            "--samples", "3", "--seed", "5"]
+    first, again = invoke(*args), invoke(*args)
+    assert first.exit_code == 0, first.output
+    assert csv_part(first.output) == csv_part(again.output)
+    table = rows(csv_part(first.output))
+    assert len(table) == 3
+    for row in table:
+        assert -8 <= float(row["dot(spin)"]) < -4 and 0.25 <= float(row["r"]) < 0.35
+
+
+def test_without_distributed_the_scheduler_option_says_what_to_install(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    result = invoke("sweep", DISK, "--run", "linearize", "--grid", "m=1:2:2", "--scheduler", "tcp://x:1")
+    assert result.exit_code == 1
+    assert "pip install 'gacli[sweep]'" in result.output and "Traceback" not in result.output

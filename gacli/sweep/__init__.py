@@ -14,7 +14,7 @@ The derivation is made once by the command and sent to each worker once;
 each worker imports the generated module once (docs/sweep.md).
 """
 
-from gacli.sweep.execute import run
+from gacli.sweep.execute import require_distributed, run
 from gacli.sweep.options import task_for
 from gacli.sweep.plan import Plan, SweepError, classify, plan
 from gacli.sweep.table import Table, check_path, table, to_csv, write
@@ -22,5 +22,5 @@ from gacli.sweep.work import MODES, Job, Task, columns, resolved_parameters, run
 
 __all__ = [
     "MODES", "Job", "Plan", "SweepError", "Table", "Task", "check_path", "classify", "columns", "plan",
-    "resolved_parameters", "run", "run_point", "table", "task_for", "to_csv", "write",
+    "require_distributed", "resolved_parameters", "run", "run_point", "table", "task_for", "to_csv", "write",
 ]

@@ -97,7 +97,7 @@ def _on_processes(job: Job, items, jobs: int, advance: Progress):
 # -- a Dask cluster ---------------------------------------------------------------
 
 def _on_dask(job: Job, items, address: str, advance: Progress):
-    distributed = _distributed()
+    distributed = require_distributed()
     try:
         client = distributed.Client(address, timeout="20s", set_as_default=False)
     except (OSError, TimeoutError, ValueError) as exc:
@@ -114,7 +114,8 @@ def _on_dask(job: Job, items, address: str, advance: Progress):
     return done
 
 
-def _distributed():
+def require_distributed():
+    """Dask's ``distributed``, or a SweepError that says what to install."""
     try:
         import distributed
     except ImportError:
