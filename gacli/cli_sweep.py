@@ -125,8 +125,7 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     with _SHARED["budget"](file, timeout) as state:
         derivation = _SHARED["derive"](file, state)
         state(f"setting up the sweep ({mode})")
-        task = S.task_for(derivation, mode, plan, set_=options["set_"], at=options["at"], states=states,
-                                  spec=spec)
+        task = S.task_for(derivation, mode, plan, set_=options["set_"], at=options["at"], states=states, spec=spec)
         job = S.Job(f"{time.time_ns()}-{id(task)}", derivation, task)
         # The options' mistakes are found at the first point, within the budget, before any worker starts.
         first = S.run_point(job, plan.points[0])
