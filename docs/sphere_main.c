@@ -9,9 +9,7 @@ int main(void)
     double xdot[SPHERE_ON_TURNTABLE_NX];
     const double dt = 1e-3;
 
-    p[SPHERE_ON_TURNTABLE_P_M] = 1.0;
-    p[SPHERE_ON_TURNTABLE_P_A] = 0.1;
-    p[SPHERE_ON_TURNTABLE_P_I] = 0.4 * 1.0 * 0.1 * 0.1;
+    sphere_on_turntable_default_parameters(p);     /* M, a, I = 2/5 M a^2: the file's values */
     r[SPHERE_ON_TURNTABLE_R_OMEGA] = 2.0;          /* the plane turns at 2 rad/s */
     x[SPHERE_ON_TURNTABLE_X_DOT_X] = 0.1;          /* rolling along x at first */
 

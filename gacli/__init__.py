@@ -71,3 +71,44 @@ def __getattr__(name: str):
 
 def __dir__() -> list[str]:
     return sorted(__all__)
+
+
+# -- gacli.linearize(...) and gacli.simulate(...) --------------------------------------------
+# Both names are also modules (gacli/linearize.py, gacli/simulate/), and importing a submodule
+# sets it as the package's attribute, over any function of that name: code inside gacli reads
+# them as modules (`from gacli import linearize as L`). So those modules are made callable as
+# the import sets them, and a call is the API's (gacli.api.linearize, gacli.api.simulate).
+
+import sys as _sys
+import types as _types
+
+_CALLABLE_MODULES = ("linearize", "simulate")
+__all__ = sorted([*__all__, "linearize", "simulate"])
+
+
+class _CallableModule(_types.ModuleType):
+    def __call__(self, *args, **kwargs):
+        from gacli import api
+
+        return getattr(api, self.__name__.rpartition(".")[2])(*args, **kwargs)
+
+
+class _Package(_types.ModuleType):
+    def __setattr__(self, name: str, value) -> None:
+        if name in _CALLABLE_MODULES and type(value) is _types.ModuleType:
+            value.__class__ = _CallableModule
+        super().__setattr__(name, value)
+
+
+_lazy_attribute = __getattr__
+
+
+def __getattr__(name: str):  # noqa: F811  (the lazy names, and the two callable modules)
+    if name in _CALLABLE_MODULES:
+        import importlib
+
+        return importlib.import_module(f"gacli.{name}")  # the import sets it, callable, by _Package
+    return _lazy_attribute(name)
+
+
+_sys.modules[__name__].__class__ = _Package

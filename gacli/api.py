@@ -15,3 +15,64 @@ from gacli.emit import emit
 from gacli.mechanics.equations import Derivation, derive
 
 __all__ = ["Derivation", "derive", "emit"]
+
+
+# -- linearize and simulate: the commands of the same names ------------------------------
+# `gacli.linearize` and `gacli.simulate` are also the modules that do the work; gacli/__init__.py
+# makes those modules callable, and a call lands here.
+
+def _derivation(system) -> Derivation:
+    """A Derivation from a path, a System (gacli.load) or a Derivation (gacli.derive)."""
+    from pathlib import Path
+
+    from gacli.loader.loading import load
+
+    if isinstance(system, Derivation):
+        return system
+    if isinstance(system, (str, Path)):
+        system = load(system)
+    return derive(system)
+
+
+def linearize(system, at=None, parameters=None):
+    """A and B about an operating point, as ``gacli linearize`` prints them.
+
+    ``system``: a path, a System or a Derivation. ``at``: state and input
+    values, {"lean": 0, "dot(spin)": -5} (others 0). ``parameters``: values
+    over the file's; a file value written in other parameters is computed
+    again from them (as ``simulate`` does). Returns a
+    :class:`gacli.linearize.Linearization` (``.A``, ``.B``, ``.eigenvalues(names)``).
+
+    >>> import gacli
+    >>> gacli.linearize("systems/rolling_disk.yaml", {"dot(spin)": -5}).eigenvalues(["lean", "dot(lean)"])  # doctest: +SKIP
+    """
+    from gacli.linearize import linearize as run
+    from gacli.sweep.work import resolved_parameters
+
+    derivation = _derivation(system)
+    return run(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))
+
+
+def simulate(system, *, parameters=None, initial=None, inputs=None, functions=None, t_end=10.0,
+             method="DOP853", rtol=1e-9, atol=1e-12, points=1001):
+    """Integrate with SciPy, as ``gacli simulate`` does; returns a :class:`gacli.simulate.Simulation`.
+
+    ``system``: a path, a System or a Derivation. ``parameters``,
+    ``initial``, ``inputs``, ``functions``: mappings from names to numbers
+    or to expressions as the command line takes them ("0.1*sin(t)", read by
+    gacli's own parser, never eval). ``.t``, ``.states``, ``.column(name)``,
+    ``.energy_drift`` and ``.residuals`` hold the result.
+
+    >>> import gacli
+    >>> run = gacli.simulate("systems/cylinder_in_cylinder.yaml", initial={"theta": 0.1}, t_end=2)  # doctest: +SKIP
+    """
+    from gacli.simulate import SimulationSpec, simulate as run
+
+    def text(values) -> tuple[tuple[str, str], ...]:
+        return tuple((name, value if isinstance(value, str) else repr(float(value)))
+                     for name, value in dict(values or {}).items())
+
+    spec = SimulationSpec(parameters=text(parameters), initial=text(initial), inputs=text(inputs),
+                          functions=text(functions), t_end=float(t_end), method=method, rtol=float(rtol),
+                          atol=float(atol), points=int(points))
+    return run(_derivation(system), spec)

@@ -14,9 +14,9 @@ from typing import Annotated, Optional
 
 import typer
 
-from gacli.version import __version__
-from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats
+from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, plain_report, show_version
 from gacli.cli_options import usage_errors
+from gacli.cli_sweep import register as register_sweep
 
 app = typer.Typer(
     name="gacli",
@@ -24,7 +24,7 @@ app = typer.Typer(
     help="Derive equations of motion by the Gibbs-Appell method.",
     epilog="gacli derive systems/sphere_on_turntable.yaml",
     no_args_is_help=True,
-    add_completion=False,
+    add_completion=True,  # --install-completion, --show-completion (docs/shell.md)
     pretty_exceptions_show_locals=False,
     rich_markup_mode=None,
 )
@@ -112,16 +112,10 @@ def _derive(path: Path, state, for_code: bool = False):
         return run(path, for_code=for_code, progress=step).derivation
 
 
-def _version(value: bool) -> None:
-    if value:
-        typer.echo(f"gacli {__version__}")
-        raise typer.Exit()
-
-
 @app.callback()
 def _main(
     version: Annotated[
-        Optional[bool], typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")
+        Optional[bool], typer.Option("--version", "-V", callback=show_version, is_eager=True, help="Show the version and exit.")
     ] = None,
 ) -> None:
     """Derive equations of motion by the Gibbs-Appell method."""
@@ -135,7 +129,7 @@ def derive(
         help=f"Output form: {', '.join(FORMATS)}.")] = "text",
     output: Annotated[Optional[str], typer.Option(
         "--output", "-o", metavar="PATH",
-        help="Write here instead of stdout: a file, or a directory when PATH ends in / or is one.")] = None,
+        help="Write here instead of stdout: a file, or a directory when PATH ends in / or is one (text: NAME.txt).")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
@@ -155,6 +149,7 @@ def derive(
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
+                files = {f"{derivation.system.name}.txt": plain_report(title, sections)}
             else:
                 from gacli.api import emit
 
@@ -163,7 +158,7 @@ def derive(
                     options = {"note": console.note}
                 files = emit(derivation, format, **options)
         # Printed once the work is done: running out of time never leaves half an output.
-        if format == "text":
+        if format == "text" and output is None:
             console.sections(title, sections)
         elif output is None:
             for _, text in sorted(files.items()):
@@ -311,7 +306,9 @@ def simulate(
             state("simulating")
             with simulate_console.progress(spec.t_end) as advance:
                 result = sim.simulate(derivation, spec, progress=advance)
-        write_outputs(result, spec, csv, plot)
+        from gacli.simulate.plot import state_units
+
+        write_outputs(result, spec, csv, plot, state_units(derivation.system))
         simulate_console.summary(result)
 
 
@@ -381,6 +378,9 @@ def verify(
         console.raw("\n".join(lines))
         if not report.passed:
             raise typer.Exit(code=1)
+
+
+register_sweep(app, example, _boundary, _budget, _derive)
 
 
 def main() -> None:

@@ -58,6 +58,15 @@ class Command(_ExampleLast, TyperCommand):
                 param.__class__ = _PlainArgument
 
 
+def show_version(value: bool) -> None:
+    """``--version``, ``-V``: the version, and nothing else."""
+    from gacli.version import __version__
+
+    if value:
+        typer.echo(f"gacli {__version__}")
+        raise typer.Exit()
+
+
 def example(command_line: str) -> dict:
     """The keyword arguments of ``app.command`` for a command whose help ends with ``command_line``."""
     return {"cls": Command, "epilog": command_line}
@@ -91,8 +100,6 @@ def code_formats() -> tuple[str, ...]:
 
 def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
     """Option combinations derive refuses, found before any work is done."""
-    if format == "text" and output is not None:
-        raise typer.BadParameter("--output needs a --format other than text", param_hint="--output")
     if format == "fmu" and output is None:
         raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
                                  param_hint="--output")
@@ -100,3 +107,13 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
         raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
     if steps and format not in ("text", "latex"):
         raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
+
+
+def plain_report(title: str, sections) -> str:
+    """The text report as ``gacli derive`` prints it, without styling: what ``--output`` writes for text."""
+    from gacli.read.textsafe import printable
+
+    lines = [printable(title)] if title else []
+    for section in sections:
+        lines += ["", printable(section.title), *(f"  {printable(line)}" for line in section.lines)]
+    return "\n".join(lines) + "\n"

@@ -61,7 +61,7 @@ def check_outputs(csv, plot) -> None:
         refuse_special(csv)
 
 
-def write_outputs(result, spec, csv, plot) -> None:
+def write_outputs(result, spec, csv, plot, units=None) -> None:
     """The CSV (by --output's rule: CSV/ is a directory that receives NAME.csv) and the plot."""
     from gacli.simulate import console, to_csv
 
@@ -74,4 +74,4 @@ def write_outputs(result, spec, csv, plot) -> None:
         from gacli.simulate.plot import plot as draw
 
         with console.notes_from_warnings():  # Matplotlib's warnings too
-            console.wrote(draw(result, plot, spec.show, spec.phase))
+            console.wrote(draw(result, plot, spec.show, spec.phase, units))

@@ -68,11 +68,6 @@ def test_unknown_format_is_a_usage_error():
     assert result.exit_code == 2
 
 
-def test_output_with_text_format_is_a_usage_error(tmp_path):
-    result = run("derive", SPHERE, "--output", str(tmp_path / "x.txt"))
-    assert result.exit_code == 2
-
-
 def test_existing_output_untouched_on_error(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("gacli: 1\nname: bad\n")

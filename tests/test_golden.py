@@ -1,7 +1,7 @@
 """Generated code byte for byte: golden files, and the same bytes under any hash seed.
 
 The golden files are tests/golden/cylinder_in_cylinder.{py,h,c}, its
-Octave function files cylinder_in_cylinder_*.m and its JAX module
+Octave function files cylinder_in_cylinder_*.m (five) and its JAX module
 cylinder_in_cylinder_jax.py, generated
 from systems/cylinder_in_cylinder.yaml; they are small on purpose, to be
 read in review. After a deliberate change to the emitters, regenerate them
@@ -30,7 +30,7 @@ GOLDEN = ROOT / "tests" / "golden"
 GOLDEN_SYSTEM = "cylinder_in_cylinder"
 UPDATE = os.environ.get("GACLI_UPDATE_GOLDEN") == "1"
 FORMATS = ("python", "c", "octave", "jax")
-FILES_PER_SYSTEM = 1 + 2 + 4 + 1
+FILES_PER_SYSTEM = 1 + 2 + 5 + 1
 
 
 def generated(name: str) -> dict[str, str]:
@@ -42,7 +42,7 @@ def generated(name: str) -> dict[str, str]:
 
 @pytest.mark.parametrize("file_name", [
     f"{GOLDEN_SYSTEM}{suffix}" for suffix in (
-        ".py", ".h", ".c", "_rhs.m", "_mass_matrix.m", "_forcing.m", "_indices.m", "_jax.py")])
+        ".py", ".h", ".c", "_rhs.m", "_mass_matrix.m", "_forcing.m", "_indices.m", "_defaults.m", "_jax.py")])
 def test_matches_golden_file(file_name):
     text = generated(GOLDEN_SYSTEM)[file_name]
     path = GOLDEN / file_name

@@ -9,6 +9,7 @@
     void <name>_mass_matrix(t, x, p, r, M)    M: k*k, row-major
     void <name>_forcing(t, x, p, r, F)        F: k
     int  <name>_rhs(t, x, p, r, xdot)         xdot: [q', u'], 0 or a pivot number
+    int  <name>_default_parameters(p)         p: the file's values; returns how many it lacks
 
 The code is C99 with no allocation, no globals and nothing beyond
 ``<math.h>``, and compiles cleanly with ``-std=c99 -Wall -Wextra -Werror
@@ -28,6 +29,8 @@ from string import Template
 import sympy as sp
 
 from gacli.emit.assembly import Assembly, assemble, live_block, reaction_equations, reaction_solve
+from gacli.emit.c_solvers import LU_SOLVE
+from gacli.emit.defaults import defaults, missing
 from gacli.emit.naming import Entry, Layout, header_lines, layout
 from gacli.emit.printers import GacliCPrinter, print_block
 from gacli.mechanics.equations import Derivation
@@ -53,6 +56,12 @@ $state
 
 /* p: the parameters. */
 $parameters
+
+/* Fills p with the values the system file gives, in the file's order (a value
+   written as an expression in earlier parameters is evaluated, exactly, when
+   the code is generated). Returns the number of parameters the file gives no
+   value; their entries are set to NaN, so that a forgotten one shows. */
+$default_parameters;
 
 /* r: the inputs, then each free function of time and its rates. */
 $r
@@ -147,10 +156,11 @@ def emit_c(derivation: Derivation, *, reactions: bool = False) -> dict[str, str]
         comment=comment, guard=f"{lay.prefix}_H", sizes=_sizes(lay),
         state=_indices(lay.state_entries), parameters=_indices(lay.parameter_entries) or "/* (none) */",
         r=_indices(lay.r_entries) or "/* (none: r may be NULL) */",
-        mass_matrix=_signature(lay, "mass_matrix"), forcing=_signature(lay, "forcing"), rhs=_signature(lay, "rhs"),
+        default_parameters=_defaults_signature(lay), mass_matrix=_signature(lay, "mass_matrix"), forcing=_signature(lay, "forcing"), rhs=_signature(lay, "rhs"),
         reactions=_reactions_declaration(derivation, lay) if reactions else "",
     )
-    functions = [_mass_matrix(derivation, lay), _forcing(derivation, lay), _rhs(derivation, lay)]
+    functions = [_default_parameters(derivation, lay), _mass_matrix(derivation, lay), _forcing(derivation, lay),
+                 _rhs(derivation, lay)]
     if reactions:
         functions.append(_reactions(derivation, lay))
     source = SOURCE.substitute(comment=comment, name=lay.system, prefix=lay.prefix, functions="".join(functions))
@@ -207,7 +217,24 @@ def _signature(lay: Layout, function: str) -> str:
             f"{' ' * len(opening)}const double *r, double *{out})")
 
 
-# -- the three functions ----------------------------------------------------------
+def _defaults_signature(lay: Layout) -> str:
+    return f"int {lay.function('default_parameters')}(double *p)"
+
+
+# -- the functions ------------------------------------------------------------------
+
+def _default_parameters(derivation: Derivation, lay: Layout) -> str:
+    """p's defaults as literals (gacli.emit.defaults): C computes nothing."""
+    rows = defaults(derivation, lay)
+    lines = [] if rows else ["(void)p;"]
+    for row in rows:
+        note = row.formula if row.value is not None else (
+            f"{row.formula}: not a number" if row.given else "no value in the system file")
+        value = "NAN" if row.value is None else repr(row.value)
+        lines.append(f"p[{row.entry.macro}] = {value};" + (f" /* {comment_text(note)} */" if note else ""))
+    lines.append(f"return {missing(rows)};")
+    return FUNCTION.substitute(signature=_defaults_signature(lay), body="\n".join(INDENT + line for line in lines))
+
 
 def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
     code = _assemble(derivation, lay, ("M",))
@@ -283,64 +310,6 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
     ]
     return LU_SOLVE.substitute(name=lay.system) + _function(lay, "reactions", locals_, code, assignments)
 
-
-LU_SOLVE = Template('''
-/* Solve K z = b in place (n*n, row-major) by LU with partial pivoting: b
-   becomes z. Returns 0, or j + 1 when pivot j is below n*eps times the
-   largest entry of K (K is singular to working precision) or not a number. */
-static int ${name}_lu_solve(int n, double *K, double *b)
-{
-    int i, j, s;
-    double tiny = 0.0;
-    for (i = 0; i < n*n; ++i) {
-        if (fabs(K[i]) > tiny) {
-            tiny = fabs(K[i]);
-        }
-    }
-    tiny *= n*2.220446049250313e-16;
-    for (j = 0; j < n; ++j) {
-        int p = j;
-        double big = fabs(K[j*n + j]);
-        for (i = j + 1; i < n; ++i) {
-            if (fabs(K[i*n + j]) > big) {
-                big = fabs(K[i*n + j]);
-                p = i;
-            }
-        }
-        if (!(big > tiny)) {
-            return j + 1;
-        }
-        if (p != j) {
-            double v;
-            for (s = 0; s < n; ++s) {
-                v = K[j*n + s];
-                K[j*n + s] = K[p*n + s];
-                K[p*n + s] = v;
-            }
-            v = b[j];
-            b[j] = b[p];
-            b[p] = v;
-        }
-        for (i = j + 1; i < n; ++i) {
-            const double f = K[i*n + j]/K[j*n + j];
-            if (f != 0.0) {
-                for (s = j + 1; s < n; ++s) {
-                    K[i*n + s] -= f*K[j*n + s];
-                }
-                b[i] -= f*b[j];
-            }
-        }
-    }
-    for (i = n - 1; i >= 0; --i) {
-        double v = b[i];
-        for (s = i + 1; s < n; ++s) {
-            v -= K[i*n + s]*b[s];
-        }
-        b[i] = v/K[i*n + i];
-    }
-    return 0;
-}
-''')
 
 
 def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Assembly:

@@ -8,6 +8,7 @@
     M    = NAME_mass_matrix(t, x, p, r)  k-by-k, symmetric positive definite
     F    = NAME_forcing(t, x, p, r)      k-by-1
     idx  = NAME_indices()                sizes and 1-based index of each entry of x, p, r
+    p    = NAME_defaults()               NP-by-1: the file's parameter values, NaN where it gives none
 
 x, p and r are vectors (column or row), indexed from 1 in the order of
 :mod:`gacli.emit.naming`; ``ode45(@(t, x) NAME_rhs(t, x, p, r), tspan, x0)``
@@ -24,6 +25,7 @@ from collections.abc import Sequence
 from string import Template
 
 from gacli.emit.assembly import Assembly, assemble, refuse_reactions
+from gacli.emit.defaults import defaults
 from gacli.emit.naming import Layout, header_lines, layout
 from gacli.emit.printers import GacliOctavePrinter
 from gacli.mechanics.equations import Derivation
@@ -66,7 +68,8 @@ def emit_octave(derivation: Derivation, *, reactions: bool = False) -> dict[str,
         EmitError: when an expression has no Octave rendering, or for ``reactions``.
     """
     refuse_reactions(reactions)
-    lay = layout(derivation, reserved=OCTAVE_RESERVED | {f"{derivation.system.name}_indices"})
+    own = {f"{derivation.system.name}_{suffix}" for suffix in ("indices", "defaults")}
+    lay = layout(derivation, reserved=OCTAVE_RESERVED | own)
     header = "\n".join(f"% {line}" for line in header_lines(derivation, "octave"))
     files = {
         "rhs": _rhs(derivation, lay), "mass_matrix": _mass_matrix(derivation, lay),
@@ -74,6 +77,7 @@ def emit_octave(derivation: Derivation, *, reactions: bool = False) -> dict[str,
     }
     texts = {f"{lay.function(name)}.m": FUNCTION.substitute(header=header, **parts) for name, parts in files.items()}
     texts[f"{lay.function('indices')}.m"] = _indices(lay, header)
+    texts[f"{lay.function('defaults')}.m"] = _defaults(derivation, lay, header)
     return texts
 
 
@@ -150,3 +154,19 @@ def _indices(lay: Layout, header: str) -> str:
         lines += [f"idx.{vector}.{e.identifier} = {e.index + 1};  % {e.name}" for e in entries]
     body = "\n".join(INDENT + line for line in lines)
     return f"{header}\nfunction idx = {name}()\n{body}\nend\n"
+
+
+def _defaults(derivation: Derivation, lay: Layout, header: str) -> str:
+    """The function that returns p as the system file gives it (gacli.emit.defaults)."""
+    name = lay.function("defaults")
+    lines = [
+        f"% {name.upper()}  The parameters p ({len(lay.parameters)}-by-1) with the values the system file gives,",
+        "% in the file's order (an expression in earlier parameters evaluated exactly); NaN where it gives none.",
+        f"p = zeros({len(lay.parameters)}, 1);",
+    ]
+    for row in defaults(derivation, lay):
+        literal = "NaN" if row.value is None else repr(row.value)
+        note = f"{row.entry.name} = {row.formula}" if row.formula else row.entry.name
+        lines.append(f"p({row.entry.index + 1}) = {literal};  % {note}")
+    body = "\n".join(INDENT + line for line in lines)
+    return f"{header}\nfunction p = {name}()\n{body}\nend\n"

@@ -28,11 +28,12 @@ _PROGRESS_STEPS = 200        # progress reports per run, at most
 # -- the run --------------------------------------------------------------------
 
 def simulate(derivation: Derivation, spec: SimulationSpec,
-             progress: Callable[[float], None] | None = None) -> Simulation:
+             progress: Callable[[float], None] | None = None, module: ModuleType | None = None) -> Simulation:
     """Integrate the generated equations from t = 0 to ``spec.t_end``.
 
     ``progress(t)`` is called as the integration advances (at most about 200
-    times, t increasing). Every problem with the options is collected first
+    times, t increasing). ``module``: the generated module, when the caller
+    already imported it (:func:`load_generated`). Every problem with the options is collected first
     and raised together, before any integration.
 
     Raises:
@@ -40,7 +41,7 @@ def simulate(derivation: Derivation, spec: SimulationSpec,
         SimulationError: a value is missing or wrong, or the integration failed.
     """
     solve_ivp = require("scipy.integrate").solve_ivp
-    module = load_generated(derivation)
+    module = load_generated(derivation) if module is None else module  # gacli sweep imports it once
     problem = _Problem.make(derivation, module, spec)
     solution = _integrate(solve_ivp, problem, spec, progress)
     t = np.linspace(0.0, spec.t_end, spec.points)

@@ -50,6 +50,16 @@ static int cylinder_in_cylinder_cholesky_solve(double *M, double *F)
     return 0;
 }
 
+int cylinder_in_cylinder_default_parameters(double *p)
+{
+    p[CYLINDER_IN_CYLINDER_P_M] = 1.0;
+    p[CYLINDER_IN_CYLINDER_P_G] = 9.81;
+    p[CYLINDER_IN_CYLINDER_P_A] = 0.1;
+    p[CYLINDER_IN_CYLINDER_P_B] = 0.5;
+    p[CYLINDER_IN_CYLINDER_P_C] = 0.4; /* -a + b */
+    return 0;
+}
+
 void cylinder_in_cylinder_mass_matrix(double t, const double *x, const double *p,
                                       const double *r, double *M)
 {

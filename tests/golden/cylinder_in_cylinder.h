@@ -28,6 +28,12 @@ extern "C" {
 #define CYLINDER_IN_CYLINDER_P_B 3   /* b */
 #define CYLINDER_IN_CYLINDER_P_C 4   /* c */
 
+/* Fills p with the values the system file gives, in the file's order (a value
+   written as an expression in earlier parameters is evaluated, exactly, when
+   the code is generated). Returns the number of parameters the file gives no
+   value; their entries are set to NaN, so that a forgotten one shows. */
+int cylinder_in_cylinder_default_parameters(double *p);
+
 /* r: the inputs, then each free function of time and its rates. */
 /* (none: r may be NULL) */
 
