@@ -85,7 +85,7 @@ def test_out_of_memory_in_a_step_is_one_located_message(monkeypatch):
     def exhausted(*args, **kwargs):
         raise MemoryError
 
-    monkeypatch.setattr("gacli.mechanics.equations.derive", exhausted)
+    monkeypatch.setattr("gacli.pipeline.derive", exhausted)
     path = ROOT / "systems" / "particle_in_plane.yaml"
     assert_located_error(run("derive", path), path, "ran out of memory in the step 'loading the declarations")
 

@@ -31,7 +31,7 @@ WRITES = {
     "fmu": [f"{NAME}.fmu"],
     "jax": [f"{NAME}_jax.py"],
     "latex": [f"{NAME}.tex"],
-    "octave": [f"{NAME}_forcing.m", f"{NAME}_indices.m", f"{NAME}_mass_matrix.m", f"{NAME}_rhs.m"],
+    "octave": [f"{NAME}_defaults.m", f"{NAME}_forcing.m", f"{NAME}_indices.m", f"{NAME}_mass_matrix.m", f"{NAME}_rhs.m"],
     "python": [f"{NAME}.py"],
 }
 SINGLE = [f for f in FORMATS if len(WRITES[f]) == 1]

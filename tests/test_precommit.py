@@ -45,7 +45,8 @@ def test_the_snippets_rev_is_this_version():
 
 def test_the_hook_is_given_yaml_files():
     (hook,) = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
-    assert hook["id"] == "gacli-check" and hook["entry"] == "gacli check" and hook["language"] == "python"
+    assert hook["id"] == "gacli-check" and hook["language"] == "python"
+    assert hook["entry"] == "gacli check --skip-other-yaml"  # every YAML file: gacli check keeps its own
     assert hook["types"] == ["yaml"]
 
 
@@ -111,3 +112,14 @@ def test_the_snippet_as_written_fails_a_broken_system_file(hooked):
     assert done.returncode == 1, done.stdout + done.stderr
     assert re.search(r"gacli check\.+Failed", done.stdout)
     assert "broken.yaml" in done.stdout and "coordinatez" in done.stdout
+
+
+def test_the_snippet_as_written_skips_other_yaml(hooked):
+    """A CI workflow and pre-commit's own config are YAML handed to the hook: skipped, not failed."""
+    user, run = hooked
+    workflow = user / "workflow.yml"
+    workflow.write_text("on: push\njobs:\n  test:\n    runs-on: ubuntu-latest\n", encoding="utf-8")
+    git("add", "workflow.yml", cwd=user)
+    done = run("workflow.yml", ".pre-commit-config.yaml", *SYSTEM_FILES)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert re.search(r"gacli check\.+Passed", done.stdout), done.stdout
