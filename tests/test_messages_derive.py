@@ -44,3 +44,21 @@ def test_a_tiny_axle_is_not_called_the_zero_vector(tmp_path: Path):
         result = CliRunner().invoke(app, ["check", str(path)])
         assert result.exit_code == 1
         assert words in result.stderr
+
+
+def test_every_command_has_one_default_budget():
+    from gacli import budget, cli, cli_sweep
+    from gacli.check import DEFAULT_TIMEOUT as CHECK
+
+    assert cli.DEFAULT_TIMEOUT == budget.DEFAULT_TIMEOUT == CHECK == cli_sweep.DEFAULT_TIMEOUT
+    for command in ("check", "derive", "gibbs", "verify", "simulate", "linearize", "sweep"):
+        result = CliRunner().invoke(app, [command, "--help"], terminal_width=200)
+        assert result.exit_code == 0
+        options = {p.name: p.default for p in next(c for c in _commands() if c.name == command).params}
+        assert options["timeout"] == budget.DEFAULT_TIMEOUT, command
+
+
+def _commands():
+    import typer.main
+
+    return typer.main.get_command(app).commands.values()
