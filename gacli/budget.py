@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
 from gacli.numeric.zero import time_limit
 
-DEFAULT_TIMEOUT = 300.0
+DEFAULT_TIMEOUT = 120.0
 TIMEOUT_HELP = "Seconds allowed for the whole command (0: no limit)."
 
 # The same step names as gacli check's (gacli.check.STEP_READ, STEP_LOAD).

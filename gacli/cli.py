@@ -42,7 +42,7 @@ SystemPath = Annotated[Path, typer.Argument(
     callback=lambda value: _existing(value))]
 # The same budget as gacli check's --timeout (gacli.budget); the literals are
 # here so that --help does not import SymPy. A test checks they agree.
-DEFAULT_TIMEOUT = 300.0
+DEFAULT_TIMEOUT = 120.0
 # Problems printed for one file, as gacli.check.MAX_DIAGNOSTICS (a test checks they agree).
 MAX_DIAGNOSTICS = 100
 Timeout = Annotated[float, typer.Option(
@@ -213,7 +213,7 @@ def check(
     verify: Annotated[bool, typer.Option("--verify", help="Also check each derivation by the independent route.")] = False,
     timeout: Annotated[
         float, typer.Option("--timeout", min=0, metavar="SECONDS", help="Seconds allowed per file (0: no limit).")
-    ] = 60.0,
+    ] = DEFAULT_TIMEOUT,
     skip_other_yaml: Annotated[bool, typer.Option(
         "--skip-other-yaml", help="Skip named YAML files that are not gacli files (no 'gacli:' key), as in "
         "folders and globs; the pre-commit hook names every YAML file.")] = False,

@@ -72,7 +72,7 @@ _Output = Annotated[Optional[Path], typer.Option(
 _Jobs = Annotated[int, typer.Option("--jobs", "-j", min=1, metavar="N", help="Local processes to run the points on.")]
 _Scheduler = Annotated[Optional[str], typer.Option(
     metavar="ADDRESS", help="Run the points on this Dask scheduler (tcp://host:8786) instead.")]
-DEFAULT_TIMEOUT = 300.0   # gacli.budget.DEFAULT_TIMEOUT, a literal so that --help does not import SymPy
+DEFAULT_TIMEOUT = 120.0   # gacli.budget.DEFAULT_TIMEOUT, a literal so that --help does not import SymPy
 _Timeout = Annotated[float, typer.Option(
     "--timeout", min=0, metavar="SECONDS", help="Seconds allowed to derive the system and run the first point "
     "(0: no limit); the other points have no limit.")]

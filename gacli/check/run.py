@@ -23,7 +23,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from gacli.budget import STEP_LOAD, STEP_READ, forget_frames  # one name for each step, shared with every command
+from gacli.budget import DEFAULT_TIMEOUT, STEP_LOAD, STEP_READ, forget_frames  # one name for each step, shared with every command
 from gacli.check.declarations import unused_declarations
 from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
@@ -40,7 +40,6 @@ from gacli.errors import (
 from gacli.display.report import dependent_rows
 from gacli.numeric.zero import time_limit
 
-DEFAULT_TIMEOUT = 60.0
 MAX_DIAGNOSTICS = 100  # per file; a file can hold thousands of errors (aliases)
 
 STEP_CLASSIFY = "classifying constraints and quasi-coordinates (Frobenius)"

@@ -87,6 +87,11 @@ def equations(d: Derivation) -> Section:
     for s, name in enumerate(d.independent):
         lhs, rhs = printed.equation(d, s)
         lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(rhs)}")
+        if lhs == 0 and rhs == 0:
+            # Said, not left for a reader to find: M is singular and the motion undetermined.
+            lines.append(f"  (0 = 0: G holds no {rate_name(name, 2)} and no load does work in {name}: nothing "
+                         f"moves with it, M is singular and this equation does not determine {rate_name(name, 2)}; "
+                         "gacli check reports it)")
     return Section("Gibbs-Appell equations, eq. (14.19)", tuple(lines))
 
 

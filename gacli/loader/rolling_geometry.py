@@ -37,7 +37,11 @@ def radius_problem(radius: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
 def axle_problem(local: sp.Matrix, dcm: sp.Matrix, known: Mapping[sp.Symbol, float]) -> str:
     """A zero axle, or one along the plane's normal at every configuration tried."""
     if _vanishes_everywhere(local.dot(local), known):
-        return "the axle is the zero vector: it gives no direction"
+        if all(c == 0 for c in local):
+            return "the axle is the zero vector: it gives no direction"
+        # Not zero, only too short to tell its direction from rounding (1e-7 along x, say).
+        return ("the axle is too short to give a direction (its length squared is under 1e-12); "
+                "write its direction with components of order one, e.g. [0, 1, 0]")
     # As lists, not a Matrix product: the product's entries are only evaluated here, and a Matrix
     # product of a fork's direction cosines was a tenth of a bicycle's loading.
     world = rotate(dcm.tolist(), list(local))
