@@ -7,20 +7,10 @@ from pathlib import Path
 from typer.testing import CliRunner
 
 from gacli.cli import app
+from test_check_messages import PENDULUM
 
-SPHERICAL = """\
-gacli: 1
-name: spherical
-parameters: [m, l, g]
-coordinates: [q1, q2, q3]
-frames:
-  rod: {rotations: [[z, q1], [x, q2], [z, q3]]}
-points:
-  bob: {rod: [0, 0, -l]}
-bodies:
-  ball: {mass: m, position: bob}
-potential: -m*g*l*cos(q2)
-"""
+# The spherical pendulum of test_check_messages, its parameters without values.
+SPHERICAL = PENDULUM.replace(": {value: VALUE}", ": {}")
 
 
 def test_an_equation_that_reads_0_eq_0_is_explained(tmp_path: Path):

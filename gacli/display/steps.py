@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
 from gacli.mechanics.equations import Derivation
 from gacli.display import printed
 from gacli.mechanics.motions import motion_acceleration, motion_velocity
@@ -226,7 +227,7 @@ def virtual_work(d: Derivation, tidy: Tidy) -> Step:
 def loads(s, tidy: Tidy) -> list[Load]:
     """The forces and torques in the frames the file wrote them in, their components read as every expression is."""
     def column(triple) -> sp.Matrix:
-        return sp.Matrix([tidy(sp.sympify(c)) for c in triple])
+        return sp.Matrix([tidy(as_expr(c)) for c in triple])
 
     if s.frames is not None:
         return [Load(load.torque, tuple((frame, column(v)) for frame, v in load.vector.terms),
