@@ -156,9 +156,8 @@ def program_for(system: System) -> Program | None:
     (gacli.loader.loading.load_in_stages) share their frame model and bodies, and the
     program reads the rows it needs from the frame model, so both have the same program.
     """
-    if system.frames is None:
-        return None
-    key = id(system.frames)
+    anchor = system.frames if system.frames is not None else system  # a tuple cannot be weakly referred to
+    key = id(anchor)
     hit = _PROGRAMS.get(key)
     if hit is not None and hit[0] is system.bodies and hit[1] == system.independent:
         return hit[2]
@@ -167,7 +166,7 @@ def program_for(system: System) -> Program | None:
     except Exception:  # noqa: BLE001 - see above
         program = None
     _PROGRAMS[key] = (system.bodies, system.independent, program)
-    weakref.finalize(system.frames, _PROGRAMS.pop, key, None)
+    weakref.finalize(anchor, _PROGRAMS.pop, key, None)
     return program
 
 

@@ -20,7 +20,10 @@ from gacli.algebra.matrices import rank
 from gacli.frame_model import INERTIAL
 from gacli.mechanics.program import rows as R
 from gacli.mechanics.program.assemble import Passes, Sums, assemble
+from gacli.mechanics.program import contacts as C
 from gacli.mechanics.program.contacts import contact
+from gacli.mechanics.program.formbodies import FormMotion, assemble_bodies
+from gacli.mechanics.program.forms import FormRows, form_rows
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
@@ -33,48 +36,62 @@ from gacli.mechanics.program.vectors import ONE, Pass, dot
 from gacli.model import System
 
 
-def _setup(system: System, independent: tuple[str, ...] | None) -> tuple[Motion, list, str | None]:
-    """The tape, frames, contacts and points; the free root only once the independent rates are known."""
+def _setup(system: System, independent: tuple[str, ...] | None,
+           forms: FormRows) -> tuple[Motion, list, tuple | None]:
+    """The tape, frames, contacts and points (none for a file without frames); the free root only
+    once the independent rates are known, and only when no form row holds its coordinates."""
     model = system.frames
     coordinates = {c.name: S.value(c.name) for c in system.coordinates}
-    tree = FrameTree(Tape(), model.edges, coordinates)
+    tree = FrameTree(Tape(), model.edges if model is not None else (), coordinates)
     tree.tape.stage = "rows"
-    links = {p.name: p for p in model.points}
-    bodies = {b.name: b for b in model.bodies}
-    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values())) for r in model.rolling]
+    links = {p.name: p for p in model.points} if model is not None else {}
+    bodies = {b.name: b for b in model.bodies} if model is not None else {}
+    rolling = model.rolling if model is not None else ()
+    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values())) for r in rolling]
     root = R.free_root(links, contacts, coordinates, independent) if independent is not None else None
+    if root is not None and set(R.root_coordinates(links, root[0], coordinates)) & forms.names:
+        root = None
     return Motion(tree, links, coordinates, contacts, root), contacts, root
 
 
+def _columns(motion: Motion, contacts: list, forms: FormRows, reduced: list[str]) -> tuple[R.Rows, dict]:
+    """The contacts' kept rows, and every row's column per rate: the contacts' rows, then the forms'."""
+    kept = R.rows(motion, contacts, reduced)
+    stated = forms.columns(motion.tape, reduced)
+    return kept, {q: kept.columns[q] + stated[q] for q in reduced}
+
+
 def independent_rates(system: System) -> tuple[str, ...]:
-    """The file's independent rates, or gacli's automatic choice from the rows over every coordinate."""
+    """The file's independent rates, or gacli's automatic choice from the rows over every rate."""
     if system.independent is not None:
         return tuple(system.independent)
-    motion, contacts, _ = _setup(system, None)
-    names = [c.name for c in system.coordinates]
-    kept = R.rows(motion, contacts, names)
-    return R.earliest_independent(kept.numbers(motion, names), names)
+    forms = form_rows(system)
+    motion, contacts, _ = _setup(system, None, forms)
+    names = list(system.rate_names)
+    _, columns = _columns(motion, contacts, forms, names)
+    return R.earliest_independent(R.numbers(motion.tape, columns, names), names)
 
 
 def program_of(system: System) -> Program:
     """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise."""
     independent = independent_rates(system)
-    if set(independent) - {c.name for c in system.coordinates}:
-        raise Unsupported("an independent rate is not a coordinate's")
-    motion, contacts, root = _setup(system, independent)
-    names = [c.name for c in system.coordinates]
+    names = list(system.rate_names)
+    if set(independent) - set(names):
+        raise Unsupported("an independent rate is not a rate of the file")
+    forms = form_rows(system)
+    motion, contacts, root = _setup(system, independent, forms)
     at_root = R.root_coordinates(motion.links, motion.root, motion.coordinates)
     _check_root_alone(motion, at_root)
     reduced = [q for q in names if q not in at_root]
     dependent = [q for q in reduced if q not in independent]
     others = [c for c in contacts if root is None or c is not root[1]]
-    kept = R.rows(motion, others, reduced)
-    if len(kept.directions) != len(dependent):
-        raise Unsupported(f"the rolling rows determine {len(kept.directions)} rates, not the "
+    kept, columns = _columns(motion, others, forms, reduced)
+    if len(kept.directions) + len(forms.forms) != len(dependent):
+        raise Unsupported(f"the rows determine {len(kept.directions) + len(forms.forms)} rates, not the "
                           f"{len(dependent)} dependent ones")
-    solver, passes = _rates(motion, kept, independent, dependent)
-    rates = _kinematics(motion, names, at_root, passes.actual)
-    passes = _gamma(motion, kept, solver, dependent, passes)
+    solver, passes = _rates(motion, columns, forms.dt(motion.tape), independent, dependent)
+    rates = _kinematics(motion, [c.name for c in system.coordinates], at_root, passes.actual)
+    passes = _gamma(system, motion, kept, forms, solver, dependent, passes)
     return replace(_dynamics(system, motion, passes, rates, at_root), independent=tuple(independent))
 
 
@@ -89,25 +106,27 @@ def _check_root_alone(motion: Motion, at_root) -> None:
                               "rolling root; write it from the root instead")
 
 
-def _rates(motion: Motion, kept: R.Rows, independent, dependent) -> tuple[Solver, Passes]:
-    """β from A_d β = −A_i (eq. 14.7), the dependent rates β u, and the partial passes (eq. 14.8)."""
+def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> tuple[Solver, Passes]:
+    """β from A_d β = −A_i (eq. 14.7), β₀ from A_d β₀ = −a₀ where rows move with time, the dependent
+    rates β u + β₀, and the partial passes (eq. 14.8)."""
     tape = motion.tape
     tape.stage = "solve"
     n = len(dependent)
-    A_d = [[kept.columns[q][i] for q in dependent] for i in range(n)]
+    A_d = [[columns[q][i] for q in dependent] for i in range(n)]
     if too_large(A_d):
-        raise Unsupported("the rolling rows couple more dependent rates than the adjugate solve takes")
+        raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
     numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
     if n and rank(numeric) < n:
-        raise Unsupported("the rolling rows do not determine the dependent rates from the independent ones")
+        raise Unsupported("the rows do not determine the dependent rates from the independent ones")
     solver = Solver(tape, A_d)
     beta = {}
     for qi in independent:
-        for qd, x in zip(dependent, solver.solve([-kept.columns[qi][i] for i in range(n)])):
+        for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)])):
             beta[(qd, qi)] = x
+    beta0 = dict(zip(dependent, solver.solve([-a for a in dt]))) if any(a != 0 for a in dt) else {}
     rates = {qi: S.rate(qi) for qi in independent}
     for qd in dependent:
-        rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent)))
+        rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent), beta0.get(qd, 0)))
     partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
     return solver, Passes(partial, Pass("actual", rates), Pass("gamma", {}))
 
@@ -127,8 +146,10 @@ def _kinematics(motion: Motion, names: list[str], at_root: dict, actual: Pass) -
     return {q: rates[q] for q in names}
 
 
-def _gamma(motion: Motion, kept: R.Rows, solver: Solver, dependent, passes: Passes) -> Passes:
-    """γ = −A_d⁻¹ b₀, b₀ the rows' velocity-product term (eq. 14.14); the pass ρ = γ."""
+def _gamma(system: System, motion: Motion, kept: R.Rows, forms: FormRows, solver: Solver, dependent,
+           passes: Passes) -> Passes:
+    """γ = −A_d⁻¹ b₀, b₀ the rows' velocity-product term (eq. 14.14): the contacts', then the forms';
+    the pass ρ = γ."""
     tape = motion.tape
     tape.stage = "gamma"
     acceleration = {}
@@ -136,18 +157,32 @@ def _gamma(motion: Motion, kept: R.Rows, solver: Solver, dependent, passes: Pass
         if c.body.name not in acceleration:
             acceleration[c.body.name] = motion.contact_acceleration0(c, passes.actual)
     b0 = [tape.let(dot(e, acceleration[c.body.name])) for c, e in kept.directions]
+    b0 += forms.rest(tape, system, passes.actual)
     gamma = dict(zip(dependent, solver.solve([-b for b in b0]))) if dependent else {}
     return Passes(passes.partial, passes.actual, Pass("gamma", gamma))
 
 
 def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_root: dict) -> Program:
-    """M and F (eq. 14.19): every unit, the loads at points of no unit, the potential and work."""
+    """M and F (eq. 14.19): every unit (or, without frames, every body), the loads at points of no
+    unit, the potential and work."""
     tape, k = motion.tape, len(passes.partial)
-    coordinates = set(motion.coordinates.values())
     sums = Sums.empty(k)
+    actual = passes.actual
+    substitution = {S.rate(q): actual.rate(q) for q in system.rate_names if actual.rate(q) != S.rate(q)}
+    substitution.update({S.rate(q): e for q, e in rates.items()})
+    if system.frames is None:
+        assemble_bodies(FormMotion(tape, system, passes, substitution), sums)
+    else:
+        _units(system, motion, passes, substitution, sums)
+    _potential_and_work(system, motion, passes, at_root, substitution, sums)
+    return finish(tape, rates, sums, k)
+
+
+def _units(system: System, motion: Motion, passes: Passes, substitution: dict, sums: Sums) -> None:
+    tape = motion.tape
+    coordinates = set(motion.coordinates.values())
     tape.stage = "body setup"
     groups = units(motion.tree, motion.links, system.frames.bodies, coordinates)
-    substitution = {S.rate(q): e for q, e in rates.items()}
     tape.stage = "loads"
     shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads, substitution, coordinates)
     for u, share in zip(groups, shares):
@@ -156,15 +191,13 @@ def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_ro
     for point, f in loose:
         for r, p in enumerate(passes.partial):
             sums.F[r].append(tape.let(dot(motion.velocity(point, p, motion.links[point].frame), f)))
-    _potential_and_work(system, motion, passes, at_root, substitution, sums)
-    return finish(tape, rates, sums, k)
 
 
 def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root: dict, substitution: dict,
                         sums: Sums) -> None:
-    """F_r += Σ_q (c_q − ∂V/∂q) δq_q/δu_r (eq. 14.13), the work form's coefficients c_q."""
+    """F_r += Σ_s (c_s − ∂V/∂q_s) δr_s/δu_r (eq. 14.13), the work form's coefficients c_s over every rate."""
     tape = motion.tape
-    names = [c.name for c in system.coordinates]
+    names = list(system.rate_names)
     coefficient = {q: -sp.diff(system.potential, S.value(q)) for q in names}
     if system.work is not None:
         for q in names:

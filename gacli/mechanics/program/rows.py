@@ -31,11 +31,16 @@ class Rows:
 
     def numbers(self, motion: Motion, names: list[str]) -> np.ndarray:
         """The rows at the tape's first generic point, over ``names``."""
-        out = np.zeros((len(self.directions), len(names)), dtype=complex)
-        for j, q in enumerate(names):
-            for i, x in enumerate(self.columns[q]):
-                out[i, j] = motion.tape.values(x)[0] if x != 0 else 0
-        return out
+        return numbers(motion.tape, self.columns, names)
+
+
+def numbers(tape, columns: dict[str, list[sp.Expr]], names: list[str]) -> np.ndarray:
+    """Rows given by their columns, at the tape's first generic point, over ``names``."""
+    out = np.zeros((len(columns[names[0]]) if names else 0, len(names)), dtype=complex)
+    for j, q in enumerate(names):
+        for i, x in enumerate(columns[q]):
+            out[i, j] = tape.values(x)[0] if x != 0 else 0
+    return out
 
 
 def free_root(links: dict[str, PointLink], contacts: list[C.Contact], coordinates: dict[str, sp.Symbol],

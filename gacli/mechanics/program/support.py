@@ -28,27 +28,23 @@ class Unsupported(Exception):
 def static_reason(system: System) -> str | None:
     """Why the builder does not take ``system`` (one sentence), or None when nothing rules it out yet."""
     model = system.frames
+    if any(c.rates is not None for c in system.constraints):
+        return "constraints nonlinear in the rates are not supported"
     if model is None:
-        return "the file is written without frames, points or rolling (format 1)"
-    for check in (_features, _small_numbers, _frames, _bodies, _rolling, _loads):
+        return _small_numbers(system, None)
+    for check in (_small_numbers, _frames, _bodies, _rolling, _loads):
         reason = check(system, model)
         if reason:
             return reason
     return None
 
 
-def _features(system: System, model: FrameModel) -> str | None:
-    if system.quasi_coordinates:
-        return "quasi-coordinates are not supported"
-    if system.functions:
-        return "functions of time are not supported"
-    if any(not c.derived for c in system.constraints):
-        return "constraints other than rolling contact (equations, forms or knife edges) are not supported"
-    if model.knife_edges:
-        return "knife edges are not supported"
-    if system.potential.has(S.T) or (system.work is not None and (system.work.dt != 0 or _timed(system.work))):
-        return "a potential or work that depends on time is not supported"
-    return None
+def _timed(e: sp.Expr, system: System) -> bool:
+    """Whether ``e`` depends on time: through t or a function of time (its value or a rate of it)."""
+    if e.has(S.T):
+        return True
+    names = {f.name for f in system.functions}
+    return any(S.RATE_NAME.sub(r"\3", s.name) in names or s.name in names for s in e.free_symbols)
 
 
 # The tape tells a vanishing entry by its values at generic points, with quantities of order
@@ -57,8 +53,9 @@ def _features(system: System, model: FrameModel) -> str | None:
 SMALLEST_NUMBER = 1e-6
 
 
-def _small_numbers(system: System, model: FrameModel) -> str | None:
-    exprs = [e for e in _expressions(model)]
+def _small_numbers(system: System, model: FrameModel | None) -> str | None:
+    exprs = list(_expressions(model if model is not None else (system.bodies, system.forces, system.torques)))
+    exprs += list(_expressions(tuple(c.form for c in system.constraints if not c.derived)))
     exprs += [system.potential] + ([c for _, c in system.work.coefficients] if system.work is not None else [])
     for e in exprs:
         for number in e.atoms(sp.Number):
@@ -81,21 +78,17 @@ def _expressions(value):
             yield from _expressions(getattr(value, f.name))
 
 
-def _timed(work) -> bool:
-    return any(c.has(S.T) for _, c in work.coefficients)
-
-
 def _frames(system: System, model: FrameModel) -> str | None:
     if model.origins:
         return f"frame origins are not supported (frame '{model.origins[0][0]}' has one)"
     coordinates = [S.value(c.name) for c in system.coordinates]
     for edge in model.edges:
-        if edge.angle.has(S.T):
+        if _timed(edge.angle, system):
             return f"the angle of frame '{edge.name}' depends on time"
         if any(sp.diff(edge.angle, q).free_symbols & set(coordinates) for q in coordinates if edge.angle.has(q)):
             return f"the angle of frame '{edge.name}' is not linear in the coordinates"
     for link in model.points:
-        if any(c.has(S.T) for c in link.components):
+        if any(_timed(c, system) for c in link.components):
             return f"the position of point '{link.name}' depends on time"
     return None
 
@@ -129,6 +122,6 @@ def _loads(system: System, model: FrameModel) -> str | None:
             return "a load written with 'from' or as a point's name is not supported"
         if any(f is None for f, _ in load.vector.terms):
             return f"a torque on '{load.body}' is given in body axes of format-1 forms"
-        if any(c.has(S.T) for _, v in load.vector.terms for c in v):
+        if any(_timed(c, system) for _, v in load.vector.terms for c in v):
             return "a load that depends on time is not supported"
     return None

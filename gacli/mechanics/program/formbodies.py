@@ -1,0 +1,125 @@
+"""Bodies, forces and torques of a file written without frames (format 1), as the program takes them.
+
+A body is its mass centre's position p(q, t) in N and, when rigid, its
+angular velocity in body axes as three forms ω_i = Σ_s W_is ṙ_s + W_it.
+For the pass ρ_r of speed r its partial velocities are V_r = Σ_q ∂p/∂q ρ_r(q)
+and Ω_r,i = Σ_s W_is ρ_r(s) (eq. 14.8); the accelerations' rest (eq. 14.14)
+is the pass ρ = γ plus the derivative of the velocity with all
+accelerations zero, a_rest = Σ_q ∂p/∂q γ_q + d/dt(Σ_q ∂p/∂q ṙ_q + ∂p/∂t)|r̈=0.
+Each body then adds, as a unit of the frame route does (program.assemble),
+
+    M_rs += m V_r·V_s + Ω_r·I Ω_s
+    F_r  += −m V_r·a_rest + Ω_r·(−I α_rest − ω × I ω)
+
+and a force f at a point P adds f·∂P/∂u_r, a torque τ (body axes) τ·Ω_r
+(eq. 14.13). The positions and forms are the file's closed forms, small;
+the rates in them are program values.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.algebra import symbols as S
+from gacli.algebra.fastdiff import jacobian_rows
+from gacli.mechanics.program.assemble import Passes, Sums
+from gacli.mechanics.program.forms import time_derivative
+from gacli.mechanics.program.support import Unsupported
+from gacli.mechanics.program.tape import Tape
+from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale
+from gacli.model import Body, Form, System
+
+
+class FormMotion:
+    """Partial, actual and rest vectors of closed-form positions and rotation forms, on one tape."""
+
+    def __init__(self, tape: Tape, system: System, passes: Passes, substitution: dict) -> None:
+        self.tape, self.system, self.passes = tape, system, passes
+        self.coordinates = [c.name for c in system.coordinates]
+        self.names = list(system.rate_names)
+        self.substitution = substitution  # dependent rate symbols → their program values
+        self.D = time_derivative(system, passes.actual)
+
+    def point(self, position) -> tuple[list[tuple], tuple]:
+        """(V_r for each speed, a_rest) of a point at ``position`` in N."""
+        tape, actual = self.tape, self.passes.actual
+        symbols = [S.value(q) for q in self.coordinates]
+        J = jacobian_rows([sp.sympify(0) + x for x in position], symbols)  # 3 × n: ∂p/∂q
+        columns = {q: tape.vec(J[i][j] for i in range(3)) for j, q in enumerate(self.coordinates)}
+        V = [self._along(columns, p) for p in self.passes.partial]
+        # d/dt of the closed forms ∂p/∂q, not of their names on the tape: q̈ itself is in V and γ.
+        velocity = [sp.Add(*(J[i][j] * actual.rate(q) for j, q in enumerate(self.coordinates)), sp.diff(x, S.T))
+                    for i, x in enumerate(position)]
+        rest = add(self._along(columns, self.passes.gamma), tuple(self.D(x) for x in velocity))
+        return V, tape.vec(rest)
+
+    def _along(self, columns: dict, p: Pass) -> tuple:
+        return self.tape.vec(add(*(scale(p.rate(q), columns[q]) for q in self.coordinates if p.rate(q) != 0)))
+
+    def rotation(self, forms: tuple[Form, Form, Form]) -> tuple[list[tuple], tuple, tuple]:
+        """(Ω_r for each speed, ω, α_rest) in body axes from the rotation forms."""
+        tape, actual = self.tape, self.passes.actual
+        rows = [{q: tape.let(f.coefficient(q)) for q in self.names if f.coefficient(q) != 0} for f in forms]
+        W = [tape.vec(sp.Add(*(c * p.rate(q) for q, c in row.items())) for row in rows)
+             for p in self.passes.partial]
+        omega = tape.vec(sp.Add(*(c * actual.rate(q) for q, c in row.items()), f.dt) for row, f in zip(rows, forms))
+        gamma = self.passes.gamma
+        alpha = []
+        for f in forms:
+            change = sp.Add(*(self.D(c) * actual.rate(q) for q, c in f.coefficients), self.D(f.dt))
+            alpha.append(sp.Add(*(c * gamma.rate(q) for q, c in f.coefficients), change))
+        return W, omega, tape.vec(alpha)
+
+    def loaded(self, e: sp.Expr) -> sp.Expr:
+        """A load's component with the dependent rates replaced by their values (eq. 14.7)."""
+        return self.tape.let(e.xreplace(self.substitution))
+
+
+def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
+    """Every body's share of M and F, then every force's and torque's (see the module)."""
+    tape, system = motion.tape, motion.system
+    rotations = {}
+    for body in system.bodies:
+        tape.stage = "partials"
+        V, a_rest = motion.point(body.position)
+        mass = tape.let(body.mass)
+        _add_translation(tape, mass, V, a_rest, sums)
+        if body.is_rigid:
+            rotations[body.name] = motion.rotation(body.rotation)
+            _add_rotation(tape, _inertia(body), *rotations[body.name], sums)
+    tape.stage = "F"
+    for force in system.forces:
+        V, _ = motion.point(force.point)
+        f = tuple(motion.loaded(c) for c in force.vector)
+        for r, v in enumerate(V):
+            sums.F[r].append(tape.let(dot(v, f)))
+    for torque in system.torques:
+        if torque.body not in rotations:
+            raise Unsupported(f"the torque on '{torque.body}' acts on a body without rotation forms")
+        tau = tuple(motion.loaded(c) for c in torque.vector)
+        for r, w in enumerate(rotations[torque.body][0]):
+            sums.F[r].append(tape.let(dot(w, tau)))
+
+
+def _inertia(body: Body) -> list[list[sp.Expr]]:
+    """The body-axis inertia: constant, as the loader reads it (its scope has parameters only)."""
+    return [[body.inertia[i, j] for j in range(3)] for i in range(3)]
+
+
+def _add_translation(tape: Tape, mass, V: list, a_rest: tuple, sums: Sums) -> None:
+    k = len(V)
+    for r in range(k):
+        for s in range(r, k):
+            sums.M[r][s].append(mass * tape.let(dot(V[r], V[s])))
+        sums.F[r].append(-mass * tape.let(dot(V[r], a_rest)))
+
+
+def _add_rotation(tape: Tape, inertia, W: list, omega: tuple, alpha: tuple, sums: Sums) -> None:
+    k = len(W)
+    H = [tape.vec(matrix_times(inertia, w)) for w in W]
+    Iw = tape.vec(matrix_times(inertia, omega))
+    torque = tape.vec(scale(-1, add(matrix_times(inertia, alpha), cross(omega, Iw))))
+    for r in range(k):
+        for s in range(r, k):
+            sums.M[r][s].append(tape.let(dot(W[r], H[s])))
+        sums.F[r].append(tape.let(dot(W[r], torque)))
