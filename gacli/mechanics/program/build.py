@@ -28,7 +28,7 @@ from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
 from gacli.mechanics.program.record import Program, finish
-from gacli.mechanics.program.solve import Solver, too_large
+from gacli.mechanics.program.solve import Solver
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.units import units
@@ -113,8 +113,6 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
     tape.stage = "solve"
     n = len(dependent)
     A_d = [[columns[q][i] for q in dependent] for i in range(n)]
-    if too_large(A_d):
-        raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
     numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
     if n and rank(numeric) < n:
         raise Unsupported("the rows do not determine the dependent rates from the independent ones")

@@ -5,13 +5,17 @@ speed for β, one for γ). Rows with one unknown left are solved first, in
 the triangular order the vanishing entries give; each such pivot is a
 factor of det A_d, so it vanishes only where A_d is singular. What remains
 is solved by the adjugate (cofactors from memoised minors), dividing only
-by its determinant, as gacli.algebra.matrices.solve_linear does.
+by its determinant, as gacli.algebra.matrices.solve_linear does; or, when
+its rows are orthogonal (B Bᵀ = D diagonal, identically: Euler parameters'
+kinematics with their unit norm), by x = Bᵀ D⁻¹ b, dividing by the rows'
+squared lengths, which vanish only where a row does.
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
+from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 
 BLOCK = 6  # the adjugate's minors grow as 2^n: a larger coupled block is refused (never met yet)
@@ -55,10 +59,6 @@ def plan(A: list[list]) -> tuple[list[tuple[int, int]], list[int], list[int]]:
     return order, rows, cols
 
 
-def too_large(A: list[list]) -> bool:
-    """Whether the block left after the pivots is larger than the adjugate takes."""
-    return len(plan(A)[1]) > BLOCK
-
 
 class Solver:
     """x = A⁻¹ b for a fixed A (program values, structural zeros exact) and several b.
@@ -73,7 +73,10 @@ class Solver:
         order, self.rows, self.cols = plan(A)
         self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
         block = [[A[i][j] for j in self.cols] for i in self.rows]
-        self.block = adjugate(tape, block) if self.rows else None
+        self.lengths = _orthogonal(tape, block) if len(self.rows) > 1 else None
+        if self.lengths is None and len(self.rows) > BLOCK:
+            raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
+        self.block = adjugate(tape, block) if self.rows and self.lengths is None else None
 
     def solve(self, b: list) -> list[sp.Expr]:
         tape, A = self.tape, self.A
@@ -81,10 +84,24 @@ class Solver:
         for i, j, inverse in self.pivots:
             rest = b[i] - sp.Add(*(A[i][k] * x[k] for k in x))
             x[j] = tape.let(tape.let(rest) * inverse)
-        if self.block is not None:
+        rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in self.rows]
+        if self.lengths is not None:
+            scaled = [tape.let(r * inverse) for r, inverse in zip(rest, self.lengths)]
+            for j in self.cols:
+                x[j] = tape.let(sp.Add(*(A[i][j] * y for i, y in zip(self.rows, scaled))))
+        elif self.block is not None:
             adj, inverse = self.block
-            rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in self.rows]
             for a, j in enumerate(self.cols):
                 x[j] = tape.let(inverse * tape.let(sp.Add(*(adj[a][t] * rest[t] for t in range(len(rest))))))
         return [x[j] for j in range(len(A))]
+
+
+def _orthogonal(tape: Tape, B: list[list]) -> list[sp.Expr] | None:
+    """1/|row|² of each row when the rows are orthogonal identically (the tape's zero test); None otherwise."""
+    n = len(B)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if not tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))):
+                return None
+    return [tape.let(1 / tape.let(sp.Add(*(x * x for x in row)))) for row in B]
 
