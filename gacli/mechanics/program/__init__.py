@@ -1,16 +1,19 @@
-"""The right-hand side of a system written with frames as a straight-line program.
+"""The right-hand side of a system as a straight-line program.
 
 :func:`build_program` writes q̇, M and F of M u̇ = F (the same M and F as
 :func:`gacli.mechanics.equations.derive`, eq. 14.19) as ordered scalar
 assignments from the state, the parameters and the inputs, working from
 the frame model (gacli.frame_model) rather than from closed forms: frames
-as a tree of simple rotations, velocities by passes of rates, the rolling
-rows solved by numbers, bodies gathered into units. :func:`unsupported`
+as a tree of simple rotations, velocities by passes of rates, the rows
+(rolling, and those the file states as forms) solved by numbers, bodies
+gathered into units; a file without frames from its bodies' positions and
+rotation forms. :func:`unsupported`
 says why a system is outside what it takes; :func:`inline` gives the
 closed forms as shared expression graphs.
 
 Modules: ``tape`` (assignments, value numbering, the zero test), ``vectors``,
 ``frames`` (the frame tree), ``contacts`` and ``motion`` (points, rolling),
+``forms`` (rows stated as forms), ``formbodies`` (bodies of a file without frames),
 ``rows`` and ``solve`` (eqs. 14.1, 14.7), ``units``, ``loads`` and
 ``assemble`` (eqs. 14.13-14.19), ``build`` (the steps in order), ``record``
 (the :class:`Program`), ``support`` (what is taken).

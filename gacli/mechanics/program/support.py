@@ -1,13 +1,13 @@
 """Which systems the program builder takes, and why not the others.
 
-The builder works from the frame model (gacli.frame_model) of a file that
-rolls its bodies on N's ground plane: frames turned by angles linear in the
-coordinates, points linked in frames, rigid bodies with frames, rolling
-wheels (axle along a frame axis) and spheres, forces and torques, a
-``potential`` and a ``work`` form over the coordinates. :func:`static_reason`
-says what rules a file out before any building; the build itself can still
-refuse (:class:`Unsupported`), e.g. when the constraint rows leave a block
-larger than the adjugate solve takes.
+The builder works from the frame model (gacli.frame_model) of a file
+written with frames, or from the bodies' positions and rotation forms of
+one without (format 1), with every row the file states as a form
+(constraints, knife edges, quasi-coordinates) and the rolling contacts on
+N's ground plane. :func:`static_reason` says what rules a file out before
+any building (docs/program.md, "What the program takes"); the build itself
+can still refuse (:class:`Unsupported`), e.g. when the rows leave a coupled
+block larger than the adjugate solve takes.
 """
 
 from __future__ import annotations
