@@ -51,7 +51,7 @@ def derive_gacli():
     """What `gacli derive --format c` derives: the straight-line program alone (gacli.mechanics.code),
     from a system loaded without the rolling rows in N that only the closed forms need."""
     from gacli.loader.loading import load_source
-    from gacli.mechanics.code import derive_for_code
+    from gacli.mechanics.equations import derive_for_code
     from gacli.read.source import read_source
 
     derivation = derive_for_code(load_source(read_source(BICYCLE), rolling_rows=False))

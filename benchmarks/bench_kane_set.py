@@ -131,7 +131,7 @@ def _derive(path: Path, code_only: bool):
     if code_only:
         # What `gacli derive --format c` does today for a large frame program (gacli.mechanics.code).
         from gacli.loader.loading import load_source
-        from gacli.mechanics.code import derive_for_code
+        from gacli.mechanics.equations import derive_for_code
         from gacli.read.source import read_source
 
         derivation = derive_for_code(load_source(read_source(path), rolling_rows=False))

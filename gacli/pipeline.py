@@ -18,8 +18,7 @@ from pathlib import Path
 
 from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.loader.loading import load_in_stages
-from gacli.mechanics.code import ProgramDerivation, derive_for_code
-from gacli.mechanics.equations import Derivation, derive
+from gacli.mechanics.equations import Derivation, derive, derive_for_code
 from gacli.model import System
 from gacli.read.source import MAX_FILE_BYTES, SourceFile, parse_source, read_source
 
@@ -33,7 +32,7 @@ class Run:
 
     source: SourceFile
     system: System
-    derivation: Derivation | ProgramDerivation
+    derivation: Derivation  # for a code-only run, possibly without closed forms (Derivation.closed)
 
 
 def read(path: str | Path) -> SourceFile:

@@ -21,7 +21,8 @@ from gacli.cli import app
 from gacli.algebra.graph import shared_subexpressions
 from gacli.errors import DerivationError
 from gacli.loader.loading import load, load_source, loads
-from gacli.mechanics.code import derive_for_code
+from gacli.mechanics.derivation import Derivation
+from gacli.mechanics.equations import derive_for_code
 from gacli.mechanics.equations import derive
 from gacli.read.source import read_source
 from test_generated_numeric import close, random_states, rhs_agrees, sympy_values
@@ -87,6 +88,8 @@ def test_the_bicycle_is_derived_for_code_without_its_closed_forms():
     assert not system.rolling_rows and not any(c.derived for c in system.constraints)
     d = derive_for_code(system)
     assert d is not None and d.code.route == "program" and d.k == 3
+    # One record type reaches the emitters, with or without its closed forms.
+    assert type(d) is Derivation and not d.closed and type(derive(load(BICYCLE))) is Derivation
     with pytest.raises(DerivationError, match="without its rolling rows"):
         derive(system)
 

@@ -23,7 +23,6 @@ with :mod:`gacli.algebra.graph`, never as trees.
 
 from __future__ import annotations
 
-import functools
 import weakref
 from dataclasses import dataclass
 
@@ -96,56 +95,6 @@ class StateNames:
     def state(self) -> tuple[sp.Symbol, ...]:
         """Coordinates in declaration order, then u in the order of ``independent``."""
         return self.coordinates + self.speeds
-
-
-@dataclass(frozen=True)
-class ProgramDerivation(StateNames):
-    """Equations for generated code alone, by the straight-line program.
-
-    What the code emitters read of a :class:`Derivation`: the system, the
-    independent rates and the state, and :attr:`code`. The chapter's steps
-    (β, the motions, G, Q, closed M and F) are not formed; text, LaTeX,
-    ``--steps``, ``--reactions`` and ``verify`` take
-    :func:`gacli.mechanics.equations.derive`.
-    """
-
-    system: System
-    program: Program
-
-    def __repr__(self) -> str:
-        return f"<ProgramDerivation of {self.system.name!r}: k = {self.k}, {self.code.operations:,} operations>"
-
-    @property
-    def independent(self) -> tuple[str, ...]:
-        return self.program.independent
-
-    @property
-    def k(self) -> int:
-        return len(self.independent)
-
-    @property
-    def speeds(self) -> tuple[sp.Symbol, ...]:
-        return tuple(S.rate(n) for n in self.independent)
-
-    @property
-    def speed_rates(self) -> tuple[sp.Symbol, ...]:
-        return tuple(S.rate(n, 2) for n in self.independent)
-
-    @functools.cached_property
-    def code(self) -> CodeEquations:
-        return from_program(self.program, tuple(c.name for c in self.system.coordinates))
-
-
-def derive_for_code(system: System) -> ProgramDerivation | None:
-    """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
-    would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
-    None otherwise, and the caller derives the closed forms as usual."""
-    # Without `independent` in the file, the choice is the chapter's route's to make
-    # (gacli.mechanics.rates), from the rows this route does not load.
-    program = program_for(system) if system.independent is not None else None
-    if program is None or program_operations(program) < PROGRAM_ALONE:
-        return None
-    return ProgramDerivation(system, program)
 
 
 def program_for(system: System) -> Program | None:

@@ -16,9 +16,7 @@ so G is never expanded to find the equations.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import sympy as sp
 
@@ -26,99 +24,26 @@ from gacli.algebra import symbols as S
 from gacli.algebra.canonical import product as canonical_product
 from gacli.errors import DerivationError
 from gacli.mechanics.forces import generalized_forces
-from gacli.mechanics.gibbs import gibbs_function
 from gacli.algebra.matrices import product
 from gacli.mechanics.axes import turned
-from gacli.mechanics.code import CodeEquations, StateNames, chosen, from_closed, program_for
+from gacli.mechanics.code import PROGRAM_ALONE, program_for, program_operations
+from gacli.mechanics.derivation import Derivation
 from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
 from gacli.mechanics.rates import Rates, solve_rates
 from gacli.algebra import trig
 from gacli.model import System
 
 
-@dataclass(frozen=True)
-class Derivation(StateNames):
-    """Everything derived from a system; SymPy expressions in plain symbols.
-
-    Symbols: a coordinate ``x`` is ``Symbol('x')``, its rate ``Symbol('dot(x)')``
-    and its acceleration ``Symbol('ddot(x)')``; ``speeds`` are the independent
-    rates u and ``speed_rates`` their derivatives u̇.
-    """
-
-    system: System
-    rates: Rates
-    motions: tuple[BodyMotion, ...]
-    mass_matrix: sp.ImmutableMatrix
-    forcing: sp.ImmutableMatrix
-    generalized_forces: sp.ImmutableMatrix
-    kinematic_equations: tuple[tuple[str, sp.Expr], ...]
-    # r̈ = β u̇ + γ for each dependent rate (eq. 14.14), as the motions used them.
-    dependent_accelerations: tuple[tuple[str, sp.Expr], ...] = ()
-
-    def __repr__(self) -> str:
-        # One line: the dataclass repr would print every matrix. The notebook's typeset face
-        # (_repr_latex_) is given by gacli.notebook, which this stage must not import.
-        s, k = self.system, self.k
-        return (f"<Derivation of {s.name!r}: k = {k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
-                f"speeds {', '.join(str(u) for u in self.speeds)}; M {k}x{k}, F {k}x1>")
-
-    @functools.cached_property
-    def code(self) -> CodeEquations:
-        """q̇, M and F as generated code computes them (:mod:`gacli.mechanics.code`): these closed
-        forms, or the straight-line program of a system written with frames where it costs fewer
-        operations."""
-        program = program_for(self.system)
-        if program is not None and program.independent != self.independent:
-            program = None  # M and F in other speeds: not the same equations
-        names = tuple(c.name for c in self.system.coordinates)
-        return chosen(program, names, lambda: from_closed(self.kinematic_equations, self.mass_matrix, self.forcing))
-
-    @functools.cached_property
-    def gibbs(self) -> sp.Expr:
-        """G with its acceleration-free terms dropped (eqs. 14.17, 14.21); built on first use."""
-        return gibbs_function(self.system, self.rates, self.motions)
-
-    @property
-    def k(self) -> int:
-        return self.rates.k
-
-    @property
-    def independent(self) -> tuple[str, ...]:
-        return self.rates.independent
-
-    @property
-    def beta(self) -> sp.ImmutableMatrix:
-        return self.rates.beta
-
-    @property
-    def beta0(self) -> sp.ImmutableMatrix:
-        return self.rates.beta0
-
-    @property
-    def speeds(self) -> tuple[sp.Symbol, ...]:
-        return self.rates.speeds
-
-    @property
-    def speed_rates(self) -> tuple[sp.Symbol, ...]:
-        return self.rates.speed_rates
-
-    @property
-    def equations(self) -> tuple[sp.Eq, ...]:
-        """∂G/∂u̇_s = Q_s written as M u̇ + (Q − F) = Q (eq. 14.19)."""
-        lhs = self.mass_matrix * sp.Matrix(self.speed_rates) + (self.generalized_forces - self.forcing)
-        return tuple(sp.Eq(lhs[s], self.generalized_forces[s], evaluate=False) for s in range(self.k))
-
-    @property
-    def mass_matrix_full(self) -> sp.ImmutableMatrix:
-        """Block diagonal [I_n, M] for the state (q, u)."""
-        n = len(self.system.coordinates)
-        return sp.ImmutableMatrix(sp.diag(sp.eye(n), self.mass_matrix))
-
-    @property
-    def forcing_full(self) -> sp.ImmutableMatrix:
-        """[q̇; F] so that mass_matrix_full · d(state)/dt = forcing_full."""
-        qdot = sp.Matrix([e for _, e in self.kinematic_equations])
-        return sp.ImmutableMatrix(qdot.col_join(sp.Matrix(self.forcing)))
+def derive_for_code(system: System) -> Derivation | None:
+    """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
+    would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
+    None otherwise, and the caller derives the closed forms as usual (docs/program.md)."""
+    # Without `independent` in the file, the choice is the chapter's route's to make
+    # (gacli.mechanics.rates), from the rows this route does not load.
+    program = program_for(system) if system.independent is not None else None
+    if program is None or program_operations(program) < PROGRAM_ALONE:
+        return None
+    return Derivation(system, program=program)
 
 
 def derive(system: System, *, progress: Callable[[str], None] | None = None) -> Derivation:
