@@ -13,8 +13,11 @@ squared lengths, which vanish only where a row does.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy as sp
 
+from gacli.algebra.blocks import block_triangular
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 
@@ -63,20 +66,18 @@ def plan(A: list[list]) -> tuple[list[tuple[int, int]], list[int], list[int]]:
 class Solver:
     """x = A⁻¹ b for a fixed A (program values, structural zeros exact) and several b.
 
-    Built once per A: a plan of pivots (row, column, 1/pivot) and one
-    adjugate block for the rest. A builder object: it writes the plan's
-    values on the tape once, then each solve writes only its own.
+    Built once per A: a plan of pivots (row, column, 1/pivot), then the
+    rest as one block, or, when that is larger than the adjugate takes and
+    not orthogonal, as the square blocks of its block-triangular order
+    (gacli.algebra.blocks), each solved in turn. A builder object: it writes
+    the plan's values on the tape once, then each solve writes only its own.
     """
 
     def __init__(self, tape: Tape, A: list[list]) -> None:
         self.tape, self.A = tape, A
-        order, self.rows, self.cols = plan(A)
+        order, rows, cols = plan(A)
         self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
-        block = [[A[i][j] for j in self.cols] for i in self.rows]
-        self.lengths = _orthogonal(tape, block) if len(self.rows) > 1 else None
-        if self.lengths is None and len(self.rows) > BLOCK:
-            raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
-        self.block = adjugate(tape, block) if self.rows and self.lengths is None else None
+        self.blocks = [_Block.of(tape, A, r, c) for r, c in _split(tape, A, rows, cols)]
 
     def solve(self, b: list) -> list[sp.Expr]:
         tape, A = self.tape, self.A
@@ -84,24 +85,59 @@ class Solver:
         for i, j, inverse in self.pivots:
             rest = b[i] - sp.Add(*(A[i][k] * x[k] for k in x))
             x[j] = tape.let(tape.let(rest) * inverse)
-        rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in self.rows]
-        if self.lengths is not None:
-            scaled = [tape.let(r * inverse) for r, inverse in zip(rest, self.lengths)]
-            for j in self.cols:
-                x[j] = tape.let(sp.Add(*(A[i][j] * y for i, y in zip(self.rows, scaled))))
-        elif self.block is not None:
-            adj, inverse = self.block
-            for a, j in enumerate(self.cols):
-                x[j] = tape.let(inverse * tape.let(sp.Add(*(adj[a][t] * rest[t] for t in range(len(rest))))))
+        for block in self.blocks:
+            rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in block.rows]
+            x.update(block.solve(tape, A, rest))
         return [x[j] for j in range(len(A))]
 
 
-def _orthogonal(tape: Tape, B: list[list]) -> list[sp.Expr] | None:
-    """1/|row|² of each row when the rows are orthogonal identically (the tape's zero test); None otherwise."""
+def _split(tape: Tape, A: list[list], rows: list[int], cols: list[int]) -> list[tuple[list[int], list[int]]]:
+    """The rest after the pivots as blocks: one, or its block-triangular order when it is too large."""
+    if not rows:
+        return []
+    whole = [[A[i][j] for j in cols] for i in rows]
+    if len(rows) <= BLOCK or _orthogonal(tape, whole, write=False) is not None:
+        return [(rows, cols)]
+    blocks = block_triangular([[x != 0 for x in row] for row in whole]) or [(tuple(range(len(rows))),) * 2]
+    out = [([rows[i] for i in r], [cols[j] for j in c]) for r, c in blocks]
+    for r, c in out:
+        if len(r) > BLOCK and _orthogonal(tape, [[A[i][j] for j in c] for i in r], write=False) is None:
+            raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
+    return out
+
+
+@dataclass(frozen=True)
+class _Block:
+    """Rows and columns solved together: by Bᵀ D⁻¹ (``lengths``, orthogonal rows) or by the adjugate."""
+
+    rows: tuple[int, ...]
+    cols: tuple[int, ...]
+    lengths: list | None
+    adjugate: tuple | None
+
+    @staticmethod
+    def of(tape: Tape, A: list[list], rows, cols) -> "_Block":
+        B = [[A[i][j] for j in cols] for i in rows]
+        lengths = _orthogonal(tape, B) if len(rows) > 1 else None
+        return _Block(tuple(rows), tuple(cols), lengths, adjugate(tape, B) if lengths is None else None)
+
+    def solve(self, tape: Tape, A: list[list], rest: list) -> dict[int, sp.Expr]:
+        if self.lengths is not None:
+            scaled = [tape.let(r * inverse) for r, inverse in zip(rest, self.lengths)]
+            return {j: tape.let(sp.Add(*(A[i][j] * y for i, y in zip(self.rows, scaled)))) for j in self.cols}
+        adj, inverse = self.adjugate
+        return {j: tape.let(inverse * tape.let(sp.Add(*(adj[a][t] * rest[t] for t in range(len(rest))))))
+                for a, j in enumerate(self.cols)}
+
+
+def _orthogonal(tape: Tape, B: list[list], write: bool = True) -> list[sp.Expr] | None:
+    """1/|row|² of each row when the rows are orthogonal identically (the tape's zero test); None
+    otherwise (and, with ``write`` False, [] when they are, nothing written on the tape)."""
     n = len(B)
     for i in range(n):
         for j in range(i + 1, n):
             if not tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))):
                 return None
+    if not write:
+        return []
     return [tape.let(1 / tape.let(sp.Add(*(x * x for x in row)))) for row in B]
-
