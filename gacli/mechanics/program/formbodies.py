@@ -21,6 +21,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Passes, Sums
 from gacli.mechanics.program.forms import time_derivative
@@ -38,19 +39,19 @@ class FormMotion:
         self.coordinates = [c.name for c in system.coordinates]
         self.names = list(system.rate_names)
         self.substitution = substitution  # dependent rate symbols → their program values
-        self.D = time_derivative(system, passes.actual)
+        self.D = time_derivative(system, passes.actual, tape)
 
     def point(self, position) -> tuple[list[tuple], tuple]:
         """(V_r for each speed, a_rest) of a point at ``position`` in N."""
         tape, actual = self.tape, self.passes.actual
         symbols = [S.value(q) for q in self.coordinates]
-        J = jacobian_rows([sp.sympify(0) + x for x in position], symbols)  # 3 × n: ∂p/∂q
+        J = jacobian_rows([as_expr(x) for x in position], symbols)  # 3 × n: ∂p/∂q
         columns = {q: tape.vec(J[i][j] for i in range(3)) for j, q in enumerate(self.coordinates)}
         V = [self._along(columns, p) for p in self.passes.partial]
         # d/dt of the closed forms ∂p/∂q, not of their names on the tape: q̈ itself is in V and γ.
-        velocity = [sp.Add(*(J[i][j] * actual.rate(q) for j, q in enumerate(self.coordinates)), sp.diff(x, S.T))
-                    for i, x in enumerate(position)]
-        rest = add(self._along(columns, self.passes.gamma), tuple(self.D(x) for x in velocity))
+        change = [sp.Add(*(self.D(J[i][j]) * actual.rate(q) for j, q in enumerate(self.coordinates)
+                           if J[i][j] != 0), self.D(sp.diff(x, S.T))) for i, x in enumerate(position)]
+        rest = add(self._along(columns, self.passes.gamma), tuple(change))
         return V, tape.vec(rest)
 
     def _along(self, columns: dict, p: Pass) -> tuple:

@@ -5,8 +5,8 @@ row, a knife edge's velocity row) and a quasi-coordinate's definition
 dθ − Σ C_s dq_s − C dt = 0 are rows of A ṙ + a₀ = 0 whose entries are the
 file's closed forms, written on the tape as they are. Their part of the
 dependent accelerations (eq. 14.14) is b₀ = Σ Ḃ_s ṙ_s + Ḃ, the rows'
-derivative with all accelerations zero, Ḃ by one memoised walk
-(gacli.algebra.fastdiff) with the coordinates' rates as program values.
+derivative with all accelerations zero, Ḃ from the partial derivatives
+(gacli.algebra.fastdiff), each named on the tape, times the rates.
 The rolling contacts' rows (gacli.mechanics.program.rows) come from the
 frame model instead.
 """
@@ -18,6 +18,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
+from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
@@ -44,7 +46,7 @@ class FormRows:
 
     def rest(self, tape: Tape, system: System, actual: Pass) -> list[sp.Expr]:
         """b₀ of each row: d/dt of its coefficients along the actual motion, times the actual rates."""
-        D = time_derivative(system, actual)
+        D = time_derivative(system, actual, tape)
         out = []
         for f in self.forms:
             terms = [D(c) * actual.rate(q) for q, c in f.coefficients]
@@ -74,9 +76,24 @@ def form_rows(system: System) -> FormRows:
     return FormRows(tuple(forms))
 
 
-def time_derivative(system: System, actual: Pass):
-    """d/dt of an expression in the coordinates, t and the free functions, along the actual rates:
-    the memoised walk of gacli.algebra.fastdiff, the rates entering as program values."""
+def time_derivative(system: System, actual: Pass, tape: Tape):
+    """d/dt of an expression in the coordinates, t and the free functions, along the actual rates.
+
+    Each partial derivative is written on the tape before it is multiplied by
+    its rate: the derivative of one row entry is often another entry (the
+    loop of a linkage: ∂(−l sin θ)/∂θ = −(l cos θ)), which the tape then
+    names once.
+    """
     chain = {S.value(c.name): actual.rate(c.name) for c in system.coordinates}
     chain.update(S.function_chain(f.name for f in system.free_functions))
-    return S.time_differentiator(chain)
+    chain[S.T] = sp.S.One
+    symbols = sorted(chain, key=lambda s: s.name)
+
+    def derivative(e: sp.Expr) -> sp.Expr:
+        e = as_expr(e)
+        if e.is_number:
+            return ZERO
+        (row,) = jacobian_rows([e], symbols)
+        return sp.Add(*(tape.let(d) * chain[s] for s, d in zip(symbols, row) if d != 0))
+
+    return derivative

@@ -58,10 +58,28 @@ class Tape:
         hit = None if e.is_Add else self._memo.get(-e)
         if hit is not None:
             return -hit
+        scaled = self._scaled(e)
+        if scaled is not None:
+            e = scaled
+            hit = self._memo.get(e)
+            if hit is not None:
+                return hit
         name = sp.Symbol(NAME.format(len(self.assignments)), real=True)
         self.assignments.append((name, e, self.stage))
         self._memo[e] = name
         return name
+
+    def _scaled(self, e: sp.Expr) -> sp.Expr | None:
+        """c·x when ``e`` is a number c ≠ ±1 times a product x (or −x) already on the tape: a
+        centre's lever l/2 sin θ when the rows have l sin θ. None otherwise."""
+        if not e.is_Mul or not e.args[0].is_Rational or e.args[0] in (1, -1):
+            return None
+        c, rest = e.as_coeff_Mul()
+        hit = self._memo.get(rest)
+        if hit is None:
+            hit = self._memo.get(-rest)
+            c = -c if hit is not None else c
+        return None if hit is None else c * hit
 
     def vec(self, v: Iterable) -> tuple:
         return tuple(self.let(c) for c in v)
