@@ -22,6 +22,9 @@ from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 
 BLOCK = 6  # the adjugate's minors grow as 2^n: a larger coupled block is refused (never met yet)
+# Orthogonality is tested pair by pair at generic points: beyond this many rows the test itself
+# would cost more than the closed route, and no system met has such a block.
+ORTHOGONAL_LIMIT = 24
 
 
 def adjugate(tape: Tape, A: list[list]) -> tuple[list[list], sp.Expr]:
@@ -134,6 +137,8 @@ def _orthogonal(tape: Tape, B: list[list], write: bool = True) -> list[sp.Expr] 
     """1/|row|² of each row when the rows are orthogonal identically (the tape's zero test); None
     otherwise (and, with ``write`` False, [] when they are, nothing written on the tape)."""
     n = len(B)
+    if n > ORTHOGONAL_LIMIT:
+        return None
     for i in range(n):
         for j in range(i + 1, n):
             if not tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))):
