@@ -79,8 +79,8 @@ def _expressions(value):
 
 
 def _frames(system: System, model: FrameModel) -> str | None:
-    if model.origins:
-        return f"frame origins are not supported (frame '{model.origins[0][0]}' has one)"
+    # A frame's origin moves only the plane a body rolls on (`on:`, refused below): vectors in
+    # frames are free vectors (docs/frames.md), so the origin enters nothing else the program forms.
     coordinates = [S.value(c.name) for c in system.coordinates]
     for edge in model.edges:
         if _timed(edge.angle, system):
