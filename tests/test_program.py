@@ -90,6 +90,16 @@ def _relative(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b) / np.maximum(1.0, np.abs(b))))
 
 
+def _assert_taken_and_agrees(system) -> None:
+    """The builder takes ``system`` and its q̇, M, F agree with the closed forms at random states."""
+    program = build_program(system)
+    assert program is not None, unsupported(system)
+    derivation = derive(system)
+    states = _states(system, derivation.speeds)
+    for ours, theirs in zip(run(program, states), _closed(derivation, states)):
+        assert _relative(ours, theirs) < TOLERANCE
+
+
 @pytest.mark.parametrize("path", FIXTURES, ids=_id)
 def test_the_program_agrees_with_the_closed_forms_or_says_why_not(path):
     system = _loaded(path)
@@ -123,12 +133,7 @@ def test_a_frame_origin_enters_only_a_rolling_plane_and_is_taken():
     text = (BICYCLE.parent / "rolling_disk.yaml").read_text(encoding="utf-8")
     text = text.replace("frames:\n", "frames:\n  lifted: {origin: {N: [0, 0, 1]}}\n", 1)
     system = loads(text)
-    program = build_program(system)
-    assert program is not None, unsupported(system)
-    derivation = derive(system)
-    states = _states(system, derivation.speeds)
-    for ours, theirs in zip(run(program, states), _closed(derivation, states)):
-        assert _relative(ours, theirs) < TOLERANCE
+    _assert_taken_and_agrees(system)
 
 
 def test_without_independent_the_automatic_choice_is_gacli_s():
@@ -261,12 +266,7 @@ DISK_LOADS = """
 def test_loads_potential_and_work(text):
     """Forces at points of no body, torques, a body turning with N, a potential, a work form with rates."""
     system = loads(text)
-    program = build_program(system)
-    assert program is not None, unsupported(system)
-    derivation = derive(system)
-    states = _states(system, derivation.speeds)
-    for ours, theirs in zip(run(program, states), _closed(derivation, states)):
-        assert _relative(ours, theirs) < TOLERANCE
+    _assert_taken_and_agrees(system)
 
 
 # -- what a review found: files the program must get right or refuse ------------------
