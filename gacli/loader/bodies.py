@@ -178,10 +178,33 @@ class Geometry:
             if load.force:
                 force = self._force(load, by_name)
                 forces += [force] if force else []
-            else:
+            elif load.torque:
                 torque = self._torque(load, by_name)
                 torques += [torque] if torque else []
+                if torque and load.reaction is not None:
+                    reaction = self._reaction(load, torque, by_name)
+                    torques += [reaction] if reaction else []
         return tuple(forces), tuple(torques)
+
+    def _reaction(self, load: LoadDecl, torque: Torque, bodies: dict[str, Body]) -> Torque | None:
+        """−torque on the body the motor is mounted on, turned from the acting body's axes into its own."""
+        where = f"loads[{load.index}].reaction"
+        body = self._body_named(load.reaction, where, bodies)
+        if body is None:
+            return None
+        if not body.is_rigid:
+            self.error(load.reaction, where, f"'{body.name}' is a particle; a torque acts on a rigid body")
+            return None
+        if body.name == torque.body:
+            self.error(load.reaction, where, "a torque's reaction acts on another body than the torque")
+            return None
+        frames = [self.body_frames.get(name) for name in (torque.body, body.name)]
+        if any(f is None or f.text not in self.frames for f in frames):
+            self.error(load.reaction, where, "a torque with a reaction needs both bodies written with a 'frame'")
+            return None
+        acting, mounted = (sp.Matrix(self.frames[f.text].dcm) for f in frames)
+        vector = mounted.T * acting * sp.Matrix(torque.vector)
+        return Torque(tuple(-x for x in vector), body.name, self.where_of(load.node))
 
     def _force(self, load: LoadDecl, bodies: dict[str, Body]) -> Force | None:
         where = f"loads[{load.index}]"

@@ -32,7 +32,9 @@ def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...]) -> Fra
         for b, d in zip(bodies, decl.bodies))
     centres = {b.name: b.point for b in placements}
     rolling = tuple(_rolling(r, parsed, frames_of) for r in decl.rolling)
-    loads = tuple(_load(ld, parsed, links, frames_of, centres) for ld in decl.loads)
+    loads = tuple(_load(ld, parsed, links, frames_of, centres) for ld in decl.loads if ld.force or ld.torque)
+    loads += tuple(_reaction(ld, loads[i]) for i, ld in enumerate(l for l in decl.loads if l.force or l.torque)
+                   if ld.reaction is not None)
     knives = tuple(KnifeEdge(c.point.text, _vector(c.along, parsed, INERTIAL)) for c in decl.constraints
                    if isinstance(c, VelocityConstraintDecl))
     return FrameModel(tuple(edges), tuple(origins), tuple(links), placements, rolling, loads, knives)
@@ -80,6 +82,13 @@ def _rolling(decl, parsed: dict, frames_of: dict) -> RollingContact:
     axle = tuple(parsed[id(decl.axle)]) if decl.axle is not None else None
     centre = _vector(decl.centre, parsed, own) if decl.centre is not None else FrameVector(())
     return RollingContact(decl.body.text, parsed[id(decl)], axle, centre, decl.on.text if decl.on is not None else None)
+
+
+def _reaction(decl, load: Load) -> Load:
+    """The torque's reaction: the same vector, negated, on the body it is mounted on (springs and
+    dampers are the potential and work the loader forms, gacli.loader.lines)."""
+    terms = tuple((frame, tuple(-c for c in components)) for frame, components in load.vector.terms)
+    return Load(FrameVector(terms, load.vector.origin), True, body=decl.reaction.text)
 
 
 def _load(decl, parsed: dict, links: list[PointLink], frames_of: dict, centres: dict) -> Load:

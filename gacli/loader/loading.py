@@ -17,9 +17,11 @@ import sympy as sp
 
 from gacli.loader.contact import RollingContacts
 from gacli.loader.bodies import Geometry
+from gacli.loader.lines import Lines, plus as _sum_forms
 from gacli.loader.forms import Forms
 from gacli.loader.frame_records import frame_model
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.read.expr.build import BuildError, Scope, build
 from gacli.read.expr.grammar import FUNCTIONS, ParseError
@@ -100,7 +102,7 @@ def _guarded(source: SourceFile, stage: Callable[[], System]) -> System:
 
 
 @dataclass
-class _Builder(Forms, Geometry, RollingContacts):
+class _Builder(Forms, Geometry, RollingContacts, Lines):
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
@@ -174,6 +176,9 @@ class _Builder(Forms, Geometry, RollingContacts):
         if work is not None and work.dt != 0:
             self.error(self.decl.work, "work", "virtual work has no dt term (δt = 0 in a virtual displacement)")
         potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
+        springs, dampers = self._line_loads(bodies)
+        potential = springs + (potential if potential is not None else 0)
+        work = dampers if work is None else (work if dampers is None else _sum_forms(work, dampers))
         constraints = tuple(c for c in (self._constraint(i, c) for i, c in enumerate(self.decl.constraints)) if c)
         constraints += self._rolling_constraints(bodies)
         independent = self._independent()
@@ -188,7 +193,7 @@ class _Builder(Forms, Geometry, RollingContacts):
             independent=independent,
             independent_location=self.where_of(self.decl.independent_node) if self.decl.independent_node else Location(self.source.path, 1, 1),
             bodies=bodies, forces=forces, torques=torques, work=work,
-            potential=potential if potential is not None else sp.S.Zero,
+            potential=as_expr(potential),
             uses_frames=uses_frames, frames=frames, rolling_rows=self.rolling_rows or not self.decl.rolling,
         )
 

@@ -115,16 +115,20 @@ def _load(reader: Reader, index: int, node: Node) -> LoadDecl | None:
     fields = reader.mapping(node, where, LOAD_KEYS)
     if not isinstance(node, Mapping):
         return None
-    if ("force" in fields) == ("torque" in fields):
-        reader.error(node, where, "a load is either a 'force' (with 'at') or a 'torque' (with 'body')")
+    kinds = [k for k in ("force", "torque", "spring", "damper") if k in fields]
+    if len(kinds) != 1:
+        reader.error(node, where, "a load is one of a 'force' (with 'at'), a 'torque' (with 'body'), "
+                                  "a 'spring' or a 'damper' (with 'between')")
         return None
     if "force" in fields:
         return _force(reader, index, node, fields, where)
-    return _torque(reader, index, node, fields, where)
+    if "torque" in fields:
+        return _torque(reader, index, node, fields, where)
+    return _line(reader, index, node, fields, where, kinds[0])
 
 
 def _force(reader: Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
-    if "at" not in fields or "body" in fields:
+    if "at" not in fields or _other(fields, ("force", "at")):
         reader.error(node, where, "a force needs 'at': a body, a point, or a position [x, y, z]")
         return None
     vector = reader.vector(fields["force"][1], f"{where}.force", (2, 3))
@@ -137,11 +141,40 @@ def _force(reader: Reader, index: int, node: Node, fields: dict, where: str) -> 
 
 
 def _torque(reader: Reader, index: int, node: Node, fields: dict, where: str) -> LoadDecl | None:
-    if "body" not in fields or "at" in fields:
-        reader.error(node, where, "a torque needs 'body': the body it acts on")
+    if "body" not in fields or _other(fields, ("torque", "body", "reaction")):
+        reader.error(node, where, "a torque needs 'body': the body it acts on (and may have 'reaction': the "
+                                  "body it is mounted on)")
         return None
     vector = reader.vector(fields["torque"][1], f"{where}.torque", (0, 1, 3))
     body = fields["body"][1]
+    reaction = fields["reaction"][1] if "reaction" in fields else None
     if not reader.name(body, f"{where}.body") or not vector:
         return None
-    return LoadDecl(index, node, torque=vector, body=body)
+    if reaction is not None and not reader.name(reaction, f"{where}.reaction"):
+        return None
+    return LoadDecl(index, node, torque=vector, body=body, reaction=reaction)
+
+
+def _other(fields: dict, allowed: tuple[str, ...]) -> bool:
+    """A key of another kind of load (a description goes with any)."""
+    return any(k not in allowed and k != "description" for k in fields)
+
+
+def _line(reader: Reader, index: int, node: Node, fields: dict, where: str, kind: str) -> LoadDecl | None:
+    """A spring or damper ``between: [A, B]`` (points or bodies' centres)."""
+    allowed = (kind, "between", "length") if kind == "spring" else (kind, "between")
+    if "between" not in fields or _other(fields, allowed):
+        reader.error(node, where, f"a {kind} needs 'between': [A, B], two points or bodies"
+                     + (" (and may have 'length': its free length)" if kind == "spring" else ""))
+        return None
+    ends = fields["between"][1]
+    if not isinstance(ends, Sequence) or len(ends.items) != 2:
+        reader.error(ends, f"{where}.between", f"expected two names [A, B], found {describe(ends)}")
+        return None
+    if not all(reader.name(e, f"{where}.between") for e in ends.items):
+        return None
+    value = reader.expression(fields[kind][1], f"{where}.{kind}")
+    length = reader.expression(fields["length"][1], f"{where}.length") if "length" in fields else None
+    if value is None or ("length" in fields and length is None):
+        return None
+    return LoadDecl(index, node, between=tuple(ends.items), length=length, **{kind: value})

@@ -165,8 +165,14 @@ def _load() -> dict:
     force = _closed({"force": _vector((2, 3)), "at": _either(_ref("name"), _vector((2, 3))),
                      "description": _text()}, ("force", "at"))
     torque = _closed({"torque": _either(_ref("expression"), _vector((1, 3))), "body": _ref("name"),
-                      "description": _text()}, ("torque", "body"))
-    return {"oneOf": [force, torque]}
+                      "reaction": _ref("name"), "description": _text()}, ("torque", "body"))
+    ends = {"type": "array", "items": _ref("name"), "minItems": 2, "maxItems": 2,
+            "description": "the two points (or bodies' centres) it acts between"}
+    spring = _closed({"spring": _ref("expression"), "between": ends, "length": _ref("expression"),
+                      "description": _text()}, ("spring", "between"))
+    damper = _closed({"damper": _ref("expression"), "between": ends, "description": _text()},
+                     ("damper", "between"))
+    return {"oneOf": [force, torque, spring, damper]}
 
 
 def _top_level() -> dict:

@@ -23,7 +23,7 @@ TOP_KEYS = (
 SYMBOL_KEYS = ("description", "value", "unit", "latex")
 QUASI_KEYS = ("description", "differential", "unit", "latex")
 BODY_KEYS = ("mass", "position", "inertia", "rotation", "frame", "description")
-LOAD_KEYS = ("force", "at", "torque", "body", "description")
+LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
 FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "description")
 ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
 VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "description")
@@ -104,6 +104,14 @@ class LoadDecl:
     at_name: Scalar | None = None
     at_position: VectorDecl | None = None
     body: Scalar | None = None
+    # A torque's reaction: −torque on this body (a motor between two bodies).
+    reaction: Scalar | None = None
+    # A linear spring (stiffness) or damper (coefficient) between two points or bodies' centres;
+    # a spring's free length (0 when absent).
+    spring: Scalar | None = None
+    damper: Scalar | None = None
+    between: tuple[Scalar, Scalar] | None = None
+    length: Scalar | None = None
 
 
 @dataclass(frozen=True)
