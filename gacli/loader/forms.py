@@ -16,9 +16,10 @@ from gacli.algebra import symbols as S
 from gacli.read.expr.build import Scope
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.algebra.graph import expanded_terms, is_small
-from gacli.numeric.zero import vanishes
+from gacli.algebra.coerce import as_expr
+from gacli.numeric.zero import decide_zero, vanishes
 from gacli.model import Constraint, Form, QuasiCoordinate
-from gacli.read.schema import SymbolDecl, VelocityConstraintDecl
+from gacli.read.schema import CoincidenceDecl, SymbolDecl, VelocityConstraintDecl
 from gacli.read.source import Scalar
 
 
@@ -59,6 +60,32 @@ class Forms:
             if form is not None and not form.coefficients and form.dt == 0:
                 self.error(sym.differential, f"quasi_coordinates.{sym.name}", "the differential is zero")
         return QuasiCoordinate(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, form)
+
+    def _constraints_of(self, index: int, decl) -> tuple[Constraint, ...]:
+        """The constraints one entry of ``constraints`` gives: one, or a coincidence's up to three."""
+        if isinstance(decl, CoincidenceDecl):
+            return self._coincidence(decl, f"constraints[{index}]")
+        constraint = self._constraint(index, decl)
+        return (constraint,) if constraint else ()
+
+    def _coincidence(self, decl: CoincidenceDecl, where: str) -> tuple[Constraint, ...]:
+        """B − A = 0 along N's axes, each component that is not identically zero a holonomic
+        constraint f(q, t) = 0, used through its differential (eq. 14.1)."""
+        ends = [self._point_named(e, f"{where}.coincide") for e in decl.ends]
+        if any(e is None for e in ends):
+            return ()
+        a, b = ends
+        names = " and ".join(e.text for e in decl.ends)
+        out = []
+        for axis, (x, y) in zip("xyz", zip(a, b)):
+            gap = as_expr(y) - as_expr(x)
+            if decide_zero(gap).zero:
+                continue
+            out.append(self._holonomic(gap, self.where_of(decl.node), f"{names} coincide along N's {axis} axis"))
+        if not out:
+            self.error(decl.node, where, f"{names} are the same point wherever the system is: "
+                                         "their coincidence constrains nothing")
+        return tuple(out)
 
     def _constraint(self, index: int, text) -> Constraint | None:
         where = f"constraints[{index}]"
@@ -118,10 +145,14 @@ class Forms:
         if expr == 0:
             self.error(text, where, "the constraint is identically satisfied")
             return None
+        return self._holonomic(expr, self.where_of(text), text.text)
+
+    def _holonomic(self, expr: sp.Expr, location, text: str) -> Constraint:
+        """f(q, t) = 0 as the row df = Σ ∂f/∂q dq + ∂f/∂t dt."""
         coordinates = [s.name for s in self.decl.of_kind("coordinate")]
         gradient = tuple((n, sp.diff(expr, S.value(n))) for n in coordinates)
         dt = S.time_derivative(expr, self.scopes.function_chain)
-        return Constraint(Form(tuple((n, c) for n, c in gradient if c != 0), dt), self.where_of(text), text.text, expr)
+        return Constraint(Form(tuple((n, c) for n, c in gradient if c != 0), dt), location, text, expr)
 
     def differential(self, expr: sp.Expr) -> sp.Matrix:
         """d(expr) as a row over the differentials of the rate names, then dt."""

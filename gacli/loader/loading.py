@@ -179,7 +179,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines):
         springs, dampers = self._line_loads(bodies)
         potential = springs + (potential if potential is not None else 0)
         work = dampers if work is None else (work if dampers is None else _sum_forms(work, dampers))
-        constraints = tuple(c for c in (self._constraint(i, c) for i, c in enumerate(self.decl.constraints)) if c)
+        constraints = tuple(c for i, d in enumerate(self.decl.constraints) for c in self._constraints_of(i, d))
         constraints += self._rolling_constraints(bodies)
         independent = self._independent()
         uses_frames = bool(self.decl.frames or self.decl.points or self.decl.rolling)

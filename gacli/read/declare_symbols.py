@@ -11,6 +11,7 @@ from gacli.read.schema import (
     VELOCITY_CONSTRAINT_KEYS,
     SymbolDecl,
     VelocityConstraintDecl,
+    CoincidenceDecl,
 )
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
@@ -97,6 +98,8 @@ def _constraint(reader: Reader, index: int, node: Node):
     if not isinstance(node, Mapping):
         return reader.expression(node, where)
     fields = reader.mapping(node, where, VELOCITY_CONSTRAINT_KEYS)
+    if "coincide" in fields:
+        return _coincidence(reader, index, node, fields, where)
     if "velocity_of" not in fields or "along" not in fields:
         reader.error(node, where, "a velocity constraint needs 'velocity_of' (a point) and 'along' (a vector)")
         return None
@@ -105,6 +108,20 @@ def _constraint(reader: Reader, index: int, node: Node):
     if not reader.name(point, f"{where}.velocity_of") or along is None:
         return None
     return VelocityConstraintDecl(index, node, point, along)
+
+
+def _coincidence(reader: Reader, index: int, node: Node, fields: dict, where: str) -> CoincidenceDecl | None:
+    """``coincide: [A, B]``: two named points at one place."""
+    ends = fields["coincide"][1]
+    if set(fields) - {"coincide", "description"}:
+        reader.error(node, where, "a coincidence is 'coincide': [A, B] alone (two points)")
+        return None
+    if not isinstance(ends, Sequence) or len(ends.items) != 2:
+        reader.error(ends, f"{where}.coincide", f"expected two point names [A, B], found {describe(ends)}")
+        return None
+    if not all(reader.name(e, f"{where}.coincide") for e in ends.items):
+        return None
+    return CoincidenceDecl(index, node, tuple(ends.items))
 
 
 def read_independent(reader: Reader, top: dict) -> tuple[Scalar, ...] | None:

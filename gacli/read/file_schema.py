@@ -100,6 +100,9 @@ def _definitions() -> dict:
             _closed({"velocity_of": _ref("name"), "along": _vector((2, 3)), "description": _text()},
                     ("velocity_of", "along"), description="a knife edge: the point's velocity has no "
                                                           "component along the vector"),
+            _closed({"coincide": {"type": "array", "items": _ref("name"), "minItems": 2, "maxItems": 2},
+                     "description": _text()}, ("coincide",),
+                    description="a loop closed at a joint: the two points are at one place"),
             description="a Pfaffian constraint 'lhs = rhs' (or one expression, meaning '= 0')"),
         "vector_in_frames": {
             "type": "object", "minProperties": 1, "propertyNames": _ref("name"),

@@ -26,7 +26,7 @@ BODY_KEYS = ("mass", "position", "inertia", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
 FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "description")
 ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
-VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "description")
+VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "coincide", "description")
 AXIS_NAMES = ("x", "y", "z")
 SYMBOL_SECTIONS = ("parameters", "functions", "inputs", "coordinates", "quasi_coordinates")
 
@@ -129,6 +129,15 @@ class RollingDecl:
 
 
 @dataclass(frozen=True)
+class CoincidenceDecl:
+    """Two points coincide (a loop closed at a joint): their N components agree, a holonomic constraint each."""
+
+    index: int
+    node: Node
+    ends: tuple[Scalar, Scalar]
+
+
+@dataclass(frozen=True)
 class VelocityConstraintDecl:
     """The velocity of a point has no component along a direction (a knife edge)."""
 
@@ -148,7 +157,7 @@ class SystemDecl:
     description: str = ""
     reference: str = ""
     symbols: tuple[SymbolDecl, ...] = ()
-    constraints: tuple[Scalar | VelocityConstraintDecl, ...] = ()
+    constraints: tuple[Scalar | VelocityConstraintDecl | CoincidenceDecl, ...] = ()
     independent: tuple[Scalar, ...] | None = None
     independent_node: Node | None = None
     frames: tuple[FrameDecl, ...] = ()
