@@ -133,6 +133,8 @@ class Geometry:
         inertia = rotation = None
         if decl.is_rigid:
             inertia = self._inertia(decl, where)
+            if inertia is not None and mass is not None and position is not None and (decl.inertia_about or decl.inertia_in):
+                inertia = self._moved_inertia(decl, where, inertia, mass, position)
             rotation = self._frame_rotation(decl, where) if decl.frame is not None else self._rotation(decl, where)
             if inertia is None or rotation is None:
                 return None

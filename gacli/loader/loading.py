@@ -17,6 +17,7 @@ import sympy as sp
 
 from gacli.loader.contact import RollingContacts
 from gacli.loader.bodies import Geometry
+from gacli.loader.inertia import MovedInertia
 from gacli.loader.lines import Lines, plus as _sum_forms
 from gacli.loader.forms import Forms
 from gacli.loader.frame_records import frame_model
@@ -102,7 +103,7 @@ def _guarded(source: SourceFile, stage: Callable[[], System]) -> System:
 
 
 @dataclass
-class _Builder(Forms, Geometry, RollingContacts, Lines):
+class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read

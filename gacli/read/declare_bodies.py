@@ -42,13 +42,20 @@ def _body(reader: Reader, key: Scalar, node: Node, where: str) -> BodyDecl | Non
     if frame is not None and not reader.name(frame, f"{where}.frame"):
         return None
     description = reader.text(fields["description"][1], f"{where}.description") if "description" in fields else ""
+    about, axes = (fields[k][1] if k in fields else None for k in ("inertia_about", "inertia_in"))
+    for option, value in (("inertia_about", about), ("inertia_in", axes)):
+        if value is not None and (frame is None or not reader.name(value, f"{where}.{option}")):
+            if frame is None:
+                reader.error(value, f"{where}.{option}", f"'{option}' needs a body with a 'frame' (its axes carry "
+                                                        "the inertia to the centre)")
+            return None
     if mass is None or position is None:
         return None
     return BodyDecl(
         name=key.text, node=key, mass=mass, position=position,
         inertia=inertia, inertia_node=fields["inertia"][1] if "inertia" in fields else None,
         rotation=rotation, rotation_node=fields["rotation"][1] if "rotation" in fields else None,
-        frame=frame, description=description,
+        frame=frame, description=description, inertia_about=about, inertia_in=axes,
     )
 
 

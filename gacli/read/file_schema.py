@@ -154,12 +154,16 @@ def _body() -> dict:
                             description="the body-axis components of the rotation as differential forms "
                                         "(one form for plane motion)"),
         "frame": _ref("name"),
+        "inertia_about": {**_ref("name"), "description": "the point the inertia is given about (its centre when absent)"},
+        "inertia_in": {**_ref("name"), "description": "the frame whose axes the inertia is given in (the body's frame when absent)"},
         "description": _text(),
     }
     rigid = {
         "inertia": {"anyOf": [{"required": ["rotation"]}, {"required": ["frame"]}]},
         "rotation": {"required": ["inertia"], "not": {"required": ["frame"]}},
         "frame": {"required": ["inertia"]},
+        "inertia_about": {"required": ["frame"]},
+        "inertia_in": {"required": ["frame"]},
     }
     return _closed(properties, ("mass", "position"), dependentSchemas=rigid)
 

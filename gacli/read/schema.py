@@ -22,7 +22,7 @@ TOP_KEYS = (
 )
 SYMBOL_KEYS = ("description", "value", "unit", "latex")
 QUASI_KEYS = ("description", "differential", "unit", "latex")
-BODY_KEYS = ("mass", "position", "inertia", "rotation", "frame", "description")
+BODY_KEYS = ("mass", "position", "inertia", "inertia_about", "inertia_in", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
 FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "description")
 ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
@@ -89,6 +89,10 @@ class BodyDecl:
     rotation_node: Node | None = None
     frame: Scalar | None = None
     description: str = ""
+    # The point the inertia is given about (its mass centre when absent) and the frame whose
+    # axes it is given in (the body's frame when absent): gacli shifts and turns it.
+    inertia_about: Scalar | None = None
+    inertia_in: Scalar | None = None
 
     @property
     def is_rigid(self) -> bool:
