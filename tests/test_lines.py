@@ -103,3 +103,22 @@ loads:
 """
     with pytest.raises(SystemFileError, match="both bodies written with a 'frame'"):
         loads(text)
+
+
+def test_a_torque_on_a_frame_fixed_in_a_body_acts_on_that_body_along_the_frame_s_axes():
+    # The rotor frame is the forearm's turned half a turn about x: its z axis is the forearm's -z, so
+    # -T along it is the elbow motor's T, and the arm must agree with the one written by hand.
+    text = ARM.replace("  fore: {rotations: [[z, th2]]}\n",
+                       "  fore: {rotations: [[z, th2]]}\n  rotor: {parent: fore, rotations: [[x, pi]]}\n")
+    text = text.replace("{torque: T, body: fore, reaction: upper}", "{torque: -T, body: rotor, reaction: upper}")
+    declared, by_hand = derive(loads(text)), derive(load(BY_HAND))
+    for state in _states(declared.system):
+        theirs = np.real(np.array(_closed(by_hand)(state)))
+        for ours in (_closed(declared)(state), _code(declared)(state)):
+            assert np.max(np.abs(np.real(np.array(ours)) - theirs)) < 1e-9 * max(1.0, np.max(np.abs(theirs)))
+
+
+def test_a_torque_on_a_frame_fixed_in_no_body_is_a_located_error():
+    text = ARM.replace("  fore: {rotations: [[z, th2]]}\n", "  fore: {rotations: [[z, th2]]}\n  loose: {rotations: [[x, th2]]}\n")
+    with pytest.raises(SystemFileError, match="'loose' is fixed in no rigid body"):
+        loads(text.replace("{torque: T, body: fore, reaction: upper}", "{torque: T, body: loose}"))

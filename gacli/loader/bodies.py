@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from gacli.algebra import trig
 from gacli.loader import frames as F
 from gacli.read.expr.build import Scope
 from gacli.model import Body, Force, Form, Torque
@@ -188,6 +189,38 @@ class Geometry:
                     torques += [reaction] if reaction else []
         return tuple(forces), tuple(torques)
 
+    def _frame_torque(self, load: LoadDecl, bodies: dict[str, Body], where: str) -> Torque | None:
+        """A torque on a frame fixed in a body (a motor's stator frame): it acts on that body; a list is
+        along the frame's axes."""
+        frame = self.frames[load.body.text]
+        owner = next((b for b in bodies.values() if b.is_rigid and self._fixed_in(frame, b.name)), None)
+        if owner is None:
+            self.error(load.body, f"{where}.body", f"the frame '{frame.name}' is fixed in no rigid body: a torque "
+                                                   "acts on a body, or on a frame fixed in one")
+            return None
+        self.torque_owners[load.body.text] = owner.name
+        if load.torque.components:
+            values = [self.expression(item, f"{where}.torque", self.scopes.load) for item in load.torque.components]
+            if any(v is None for v in values):
+                return None
+            along = (sp.S.Zero, sp.S.Zero, values[0]) if len(values) == 1 else tuple(values)
+            self.parsed[id(load.torque)] = {frame.name: along}
+            inertial = sp.Matrix(frame.dcm) * sp.Matrix(along)
+        else:
+            inertial = self._in_frames(load.torque, f"{where}.torque", self.scopes.load)
+            if inertial is None:
+                return None
+        body_frame = self.frames[self.body_frames[owner.name].text]
+        return Torque(tuple(sp.Matrix(body_frame.dcm).T * sp.Matrix(inertial)), owner.name, self.where_of(load.node))
+
+    def _fixed_in(self, frame, body: str) -> bool:
+        """Whether ``frame`` keeps its orientation in the body's frame."""
+        own = self.body_frames.get(body)
+        if own is None or own.text not in self.frames:
+            return False
+        turn = sp.Matrix(self.frames[own.text].dcm).T * sp.Matrix(frame.dcm)
+        return not self._moves(turn.applyfunc(lambda x: trig.reduce(sp.expand(x))))
+
     def _reaction(self, load: LoadDecl, torque: Torque, bodies: dict[str, Body]) -> Torque | None:
         """−torque on the body the motor is mounted on, turned from the acting body's axes into its own."""
         where = f"loads[{load.index}].reaction"
@@ -233,6 +266,8 @@ class Geometry:
 
     def _torque(self, load: LoadDecl, bodies: dict[str, Body]) -> Torque | None:
         where = f"loads[{load.index}]"
+        if load.body.text not in bodies and load.body.text in self.frames:
+            return self._frame_torque(load, bodies, where)
         body = self._body_named(load.body, f"{where}.body", bodies)
         if body is None:
             return None

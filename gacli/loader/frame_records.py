@@ -20,7 +20,8 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 _ZERO3 = (sp.S.Zero, sp.S.Zero, sp.S.Zero)
 
 
-def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...]) -> FrameModel:
+def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
+                owners: dict[str, str] | None = None) -> FrameModel:
     """The records of ``decl``'s frames, points, bodies, rolling contacts and loads (a loaded file: no errors)."""
     links: list[PointLink] = []
     edges, origins = _edges(decl, parsed, links)
@@ -32,7 +33,8 @@ def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...]) -> Fra
         for b, d in zip(bodies, decl.bodies))
     centres = {b.name: b.point for b in placements}
     rolling = tuple(_rolling(r, parsed, frames_of) for r in decl.rolling)
-    loads = tuple(_load(ld, parsed, links, frames_of, centres) for ld in decl.loads if ld.force or ld.torque)
+    loads = tuple(_load(ld, parsed, links, frames_of, centres, owners or {}) for ld in decl.loads
+                  if ld.force or ld.torque)
     loads += tuple(_reaction(ld, loads[i]) for i, ld in enumerate(l for l in decl.loads if l.force or l.torque)
                    if ld.reaction is not None)
     knives = tuple(KnifeEdge(c.point.text, _vector(c.along, parsed, INERTIAL)) for c in decl.constraints
@@ -91,8 +93,10 @@ def _reaction(decl, load: Load) -> Load:
     return Load(FrameVector(terms, load.vector.origin), True, body=decl.reaction.text)
 
 
-def _load(decl, parsed: dict, links: list[PointLink], frames_of: dict, centres: dict) -> Load:
+def _load(decl, parsed: dict, links: list[PointLink], frames_of: dict, centres: dict, owners: dict) -> Load:
     if decl.torque is not None:
+        if decl.body.text in owners:  # a torque on a frame fixed in a body: a list is along that frame
+            return Load(_vector(decl.torque, parsed, decl.body.text), True, body=owners[decl.body.text])
         own = frames_of.get(decl.body.text)
         return Load(_vector(decl.torque, parsed, own), True, body=decl.body.text)
     if decl.at_name is not None:

@@ -172,6 +172,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
         self._frame_origins()
         bodies = tuple(b for b in (self._body(b) for b in self.decl.bodies) if b)
         self.body_frames = {b.name: b.frame for b in self.decl.bodies if b.frame is not None}
+        self.torque_owners: dict[str, str] = {}  # a frame a torque acts on → the body it is fixed in
         forces, torques = self._loads(bodies)
         work = self._form(self.decl.work, "work", self.scopes.work) if self.decl.work else None
         if work is not None and work.dt != 0:
@@ -184,7 +185,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
         constraints += self._rolling_constraints(bodies)
         independent = self._independent()
         uses_frames = bool(self.decl.frames or self.decl.points or self.decl.rolling)
-        frames = frame_model(self.decl, self.parsed, bodies) if uses_frames and not self.diagnostics else None
+        frames = frame_model(self.decl, self.parsed, bodies, self.torque_owners) if uses_frames and not self.diagnostics else None
         return System(
             name=self.decl.name, path=self.source.path, sha256=self.source.sha256,
             location=Location(self.source.path, 1, 1),
