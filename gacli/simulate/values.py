@@ -14,6 +14,7 @@ from gacli.mechanics.equations import Derivation
 from gacli.read.expr.build import BuildError, Scope, build
 from gacli.read.expr.grammar import Name, ParseError, Rate
 from gacli.read.expr.parser import parse
+from gacli.simulate.initial import constrained
 from gacli.simulate.spec import MAX_FUNCTION_ORDER, MAX_VALUES, METHODS, Assignments, SimulationSpec
 from gacli.simulate.suggest import closest_state
 
@@ -101,14 +102,18 @@ class OptionValues:
         x0 = np.zeros(len(self.state))
         numbers = {S.value(n): sp.Float(v) for n, v in zip(self.parameter_names, p) if math.isfinite(v)}
         scope = self._scope("--init", {n: S.value(n) for n in self.parameter_names}, "numbers and parameters")
+        given = set()
         for name, text in self._unique("--init", assignments):
             entry = self._state_name("--init", name)
             expr = self._expression("--init", name, text, scope)
             if entry is None or expr is None:
                 continue
+            given.add(entry)
             expr = expr.xreplace(numbers)
             if not expr.free_symbols:  # else a parameter without value, reported already
                 x0[self.state.index(entry)] = self._number(f"--init {entry}", expr)
+        if not self.problems and len(numbers) == len(self.parameter_names):
+            self.problems += constrained(self.system, x0, self.state, numbers, given)
         return x0
 
     # -- free functions and inputs
