@@ -56,10 +56,14 @@ $undefined$functions''')
 # (docs/generated-code.md, "Undefined points"); here one exception class.
 UNDEFINED = '''
 
-class UndefinedPointError(numpy.linalg.LinAlgError):
+class UndefinedPointError(ValueError):
     """The equations are undefined at this point: a number they compute is not
     finite (a function outside its domain, a division by zero, an overflow, a
     NaN or infinity given) or M is not positive definite."""
+
+
+class SingularMassMatrixError(UndefinedPointError, numpy.linalg.LinAlgError):
+    """M is not positive definite at this point."""
 
 
 def _defined(function):
@@ -98,8 +102,8 @@ def _cholesky_solve(M, F):
 
     Only the lower triangle of M is read (its rows may stop at the
     diagonal); M = L L^T is factored in place, L over that triangle. Raises
-    UndefinedPointError when an entry is not finite or a pivot is not
-    positive. Plain loops: for the few rates of a mechanical system they
+    UndefinedPointError when an entry is not finite, SingularMassMatrixError
+    when a pivot is not positive. Plain loops: for the few rates of a mechanical system they
     beat NumPy's call overhead.
     """
     if not all(map(math.isfinite, F)) or not all(math.isfinite(v) for row in M for v in row):
@@ -111,7 +115,7 @@ def _cholesky_solve(M, F):
         for s in range(j):
             d -= Mj[s] * Mj[s]
         if not d > 0.0:
-            raise UndefinedPointError("the mass matrix is not positive definite")
+            raise SingularMassMatrixError("the mass matrix is not positive definite")
         d = math.sqrt(d)
         Mj[j] = d
         for i in range(j + 1, k):
