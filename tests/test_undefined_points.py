@@ -84,6 +84,14 @@ def _write(files: dict, directory) -> None:
         (directory / name).write_text(text, encoding="utf-8")
 
 
+def _written(files: dict, built, folder: str):
+    """``files`` written into a new folder of ``built``."""
+    directory = built / folder
+    directory.mkdir()
+    _write(files, directory)
+    return directory
+
+
 # -- Python ------------------------------------------------------------------------
 
 @pytest.mark.parametrize("case", CASES)
@@ -130,9 +138,7 @@ def test_python_mass_matrix_and_forcing_refuse_too(derivation, built):
 @pytest.fixture(scope="module")
 def c_library(derivation, built):
     compiler = require_tool("gcc")
-    directory = built / "c"
-    directory.mkdir()
-    _write(emit_c(derivation), directory)
+    directory = _written(emit_c(derivation), built, "c")
     library = directory / "libundefined.so"
     result = subprocess.run([compiler, *STRICT, "-O2", "-shared", "-fPIC", str(directory / "undefined_point.c"),
                              "-o", str(library), "-lm"], capture_output=True, text=True)
@@ -164,9 +170,7 @@ def test_c(case, c_library):
 def octave_results(derivation, built):
     """One Octave run for every case: 'ok v1 v2' or 'error IDENTIFIER'."""
     octave = require_tool("octave")
-    directory = built / "octave"
-    directory.mkdir()
-    _write(emit_octave(derivation), directory)
+    directory = _written(emit_octave(derivation), built, "octave")
     lines = ["format long g"]
     for case in CASES:
         x, p = point(case)
@@ -201,9 +205,7 @@ def test_octave(case, octave_results):
 def jax_module(derivation, built):
     jax = pytest.importorskip("jax")
     jax.config.update("jax_enable_x64", True)
-    directory = built / "jax"
-    directory.mkdir()
-    _write(emit_jax(derivation), directory)
+    directory = _written(emit_jax(derivation), built, "jax")
     return import_module(directory / "undefined_point_jax.py"), jax
 
 
