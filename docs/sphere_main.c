@@ -15,7 +15,7 @@ int main(void)
 
     for (int step = 0; step < 5000; ++step) {      /* explicit Euler, 5 s */
         if (sphere_on_turntable_rhs(step * dt, x, p, r, xdot) != 0)
-            return 1;                               /* M not positive definite */
+            return 1;                               /* undefined here: see docs/generated-code.md */
         for (int i = 0; i < SPHERE_ON_TURNTABLE_NX; ++i)
             x[i] += dt * xdot[i];
     }

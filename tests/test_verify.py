@@ -48,7 +48,7 @@ def test_deterministic_and_seeded():
 
 
 def test_independent_route_imports_none_of_the_checked_code():
-    """gacli.verify imports gacli.algebra.symbols and gacli.model only: none of the derivation's code."""
+    """gacli.verify imports gacli.algebra and gacli.model: none of the derivation's code (gacli.mechanics)."""
     import pkgutil
 
     modules = [V] + [importlib.import_module(f"gacli.verify.{m.name}") for m in pkgutil.iter_modules(V.__path__)]

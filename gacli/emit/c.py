@@ -8,7 +8,7 @@
     <NAME>_X_*, _P_*, _R_*            index of each entry (see naming.py)
     void <name>_mass_matrix(t, x, p, r, M)    M: k*k, row-major
     void <name>_forcing(t, x, p, r, F)        F: k
-    int  <name>_rhs(t, x, p, r, xdot)         xdot: [q', u'], 0 or a pivot number
+    int  <name>_rhs(t, x, p, r, xdot)         xdot: [q', u']; 0, a pivot number, or -1 (undefined)
     int  <name>_default_parameters(p)         p: the file's values; returns how many it lacks
 
 The code is C99 with no allocation, no globals and nothing beyond
@@ -73,8 +73,10 @@ $mass_matrix;
 $forcing;
 
 /* xdot = [q', u'], NX entries, with M u' = F solved by Cholesky.
-   Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive:
-   M is not positive definite, and the u' part of xdot is not valid. */
+   Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive
+   (M is not positive definite); or -1 when a number it computes is not
+   finite (a function outside its domain, a division by zero, an overflow,
+   NaN or infinity given). On a nonzero return every entry of xdot is NaN. */
 $rhs;
 $reactions
 #ifdef __cplusplus
@@ -131,6 +133,41 @@ static int ${name}_cholesky_solve(double *M, double *F)
         F[i] = v/M[i*k + i];
     }
     return 0;
+}
+
+/* The end of rhs: xdot holds q' and F (its last NU entries), M the lower
+   triangle of the mass matrix. Returns what rhs returns: -1 when an entry
+   is not finite, before or after the solve, else the Cholesky solve's. */
+static int ${name}_solved(double *M, double *xdot)
+{
+    const int k = ${prefix}_NU, n = ${prefix}_NX;
+    int i, j, status = 0;
+    for (i = 0; i < n; ++i) {
+        if (!isfinite(xdot[i])) {
+            status = -1;
+        }
+    }
+    for (i = 0; i < k; ++i) {
+        for (j = 0; j <= i; ++j) {
+            if (!isfinite(M[i*k + j])) {
+                status = -1;
+            }
+        }
+    }
+    if (status == 0) {
+        status = ${name}_cholesky_solve(M, xdot + (n - k));
+    }
+    for (i = 0; status == 0 && i < n; ++i) {
+        if (!isfinite(xdot[i])) {
+            status = -1;
+        }
+    }
+    if (status != 0) {
+        for (i = 0; i < n; ++i) {
+            xdot[i] = NAN;
+        }
+    }
+    return status;
 }
 $functions''')
 
@@ -260,7 +297,7 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
         *_assign_vector("xdot", code.slots["qdot"]),
         *_assign_matrix(code.slots["M_lower"], lay.k),
         *_assign_vector("F", code.slots["F"]),
-        f"return {lay.function('cholesky_solve')}(M, F);",
+        f"return {lay.function('solved')}(M, xdot);",
     ]
     return _function(lay, "rhs", locals_, code, assignments)
 

@@ -158,6 +158,12 @@ static void start_values(Instance *m)
 static fmi2Status derivatives(Instance *m)
 {
     int pivot = NAME_rhs(m->time, m->v + VR_X, m->v + VR_P, m->v + VR_R, m->v + VR_DX);
+    if (pivot < 0) {
+        note(m, fmi2Error, "logStatusError",
+             "the equations are undefined at t = %g: a value is not finite (a function outside its domain, "
+             "a division by zero or an overflow): check the parameters, the inputs and the state", m->time);
+        return fmi2Error;
+    }
     if (pivot != 0) {
         note(m, fmi2Error, "logStatusError",
              "the mass matrix is not positive definite at t = %g (pivot %d): check the parameters and the state",

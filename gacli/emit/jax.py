@@ -60,6 +60,13 @@ STATE = $state
 PARAMETERS = $parameters
 INPUTS = $inputs
 DEFAULTS = $defaults
+
+
+def _defined(values):
+    """values, or NaN in every entry when one of them is not finite: the equations
+    are undefined there (a function outside its domain, a division by zero, an
+    overflow, NaN given, or M not positive definite). jax.jit cannot raise."""
+    return jax.numpy.where(jax.numpy.all(jax.numpy.isfinite(values)), values, jax.numpy.nan)
 $functions''')
 
 DOCS = {
@@ -88,12 +95,12 @@ def emit_jax(derivation: Derivation, *, reactions: bool = False) -> dict[str, st
 
 def _mass_matrix(derivation: Derivation, lay: Layout) -> str:
     code = _assemble(derivation, lay, ("M",))
-    return _function("mass_matrix", lay, code, [*_mass(code.slots["M"], lay.k), "return M"])
+    return _function("mass_matrix", lay, code, [*_mass(code.slots["M"], lay.k), "return _defined(M)"])
 
 
 def _forcing(derivation: Derivation, lay: Layout) -> str:
     code = _assemble(derivation, lay, ("F",))
-    return _function("forcing", lay, code, _array("return", [c for _, c in code.slots["F"]]))
+    return _function("forcing", lay, code, [*_array("F =", [c for _, c in code.slots["F"]]), "return _defined(F)"])
 
 
 def _rhs(derivation: Derivation, lay: Layout) -> str:
@@ -105,7 +112,7 @@ def _rhs(derivation: Derivation, lay: Layout) -> str:
         *_array("F =", [c for _, c in code.slots["F"]]),
         *_array("qdot =", [c for _, c in code.slots["qdot"]]),
         "u_dot = jax.scipy.linalg.cho_solve(jax.scipy.linalg.cho_factor(M, lower=True), F)",
-        f"return {NP}.concatenate([qdot, u_dot])",
+        f"return _defined({NP}.concatenate([qdot, u_dot]))",
     ]
     return _function("rhs", lay, code, lines)
 
@@ -138,7 +145,7 @@ def _function(name: str, lay: Layout, code: Assembly, lines: Sequence[str]) -> s
         *lines,
     ]
     doc = DOCS[name].format(k=lay.k, nx=len(lay.state))
-    return FUNCTION.substitute(name=name, doc=doc, body="\n".join(INDENT + line for line in body))
+    return FUNCTION.substitute(decorator="", name=name, doc=doc, body="\n".join(INDENT + line for line in body))
 
 
 def _mass(slots: Sequence[tuple[tuple[int, int], str]], k: int) -> list[str]:

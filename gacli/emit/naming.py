@@ -131,7 +131,7 @@ RESERVED = ReservedNames(GENERATED_NAMES | C_KEYWORDS | MATH_H_NAMES | frozenset
                          | frozenset(n for n in dir(builtins) if not n.startswith("_")))
 
 # Generated function names, after "<name>_"; the C source calls the last one.
-C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "reactions", "default_parameters", "lu_solve", "cholesky_solve")
+C_FUNCTIONS = ("mass_matrix", "forcing", "rhs", "reactions", "default_parameters", "lu_solve", "cholesky_solve", "solved")
 
 _RATE_NAME = S.RATE_NAME
 _RATE_ORDERS = {"dot": 1, "ddot": 2}

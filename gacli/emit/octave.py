@@ -44,6 +44,7 @@ OCTAVE_RESERVED = frozenset("""
     sin cos tan sec csc cot asin acos atan atan2 sinh cosh tanh asinh acosh atanh exp log log2
     log10 log1p expm1 sqrt cbrt abs sign floor ceil round fix mod rem power mpower hypot gamma
     erf erfc real imag conj min max zeros ones chol struct nargin double L idx
+    flag all isfinite isreal error
 """.split())
 
 FUNCTION = Template('''\
@@ -86,20 +87,39 @@ def _rhs(derivation: Derivation, lay: Layout) -> dict[str, str]:
     lines = [
         *_mass("M_lower", code, lay.k),
         *_column("F", [c for _, c in code.slots["F"]]),
-        "L = chol(M, 'lower');  % M = L*L', reading only the lower triangle; an error unless M is positive definite",
-        *_column("xdot", [*(c for _, c in code.slots["qdot"]), "L' \\ (L \\ F)"]),
+        *_column("xdot", [*(c for _, c in code.slots["qdot"]), "F"]),
+        *_refuse_undefined(lay, "rhs", "[xdot; M(:)]"),
+        "[L, flag] = chol(M, 'lower');  % M = L*L', reading only the lower triangle",
+        "if flag ~= 0",
+        f"{INDENT}error('gacli:undefined', '{lay.function('rhs')}: the mass matrix is not positive definite "
+        "at t = %g (pivot %d)', t, flag);",
+        "end",
+        f"xdot({len(lay.state) - lay.k + 1}:end) = L' \\ (L \\ F);",
+        *_refuse_undefined(lay, "rhs", "xdot"),
     ]
     return _function(lay, "rhs", "xdot", code, lines)
 
 
+def _refuse_undefined(lay: Layout, name: str, values: str) -> list[str]:
+    """Octave computes sqrt(-1) as a complex number and 1/0 as Inf: where the equations are
+    undefined it raises gacli:undefined, as the other targets raise or return a flag."""
+    return [
+        f"if ~all(isfinite({values})) || ~isreal({values})",
+        f"{INDENT}error('gacli:undefined', '{lay.function(name)}: undefined at t = %g: a value is not a finite "
+        "real number', t);",
+        "end",
+    ]
+
+
 def _mass_matrix(derivation: Derivation, lay: Layout) -> dict[str, str]:
     code = _assemble(derivation, lay, ("M",))
-    return _function(lay, "mass_matrix", "M", code, _mass("M", code, lay.k))
+    return _function(lay, "mass_matrix", "M", code, [*_mass("M", code, lay.k), *_refuse_undefined(lay, "mass_matrix", "M(:)")])
 
 
 def _forcing(derivation: Derivation, lay: Layout) -> dict[str, str]:
     code = _assemble(derivation, lay, ("F",))
-    return _function(lay, "forcing", "F", code, _column("F", [c for _, c in code.slots["F"]]))
+    return _function(lay, "forcing", "F", code, [*_column("F", [c for _, c in code.slots["F"]]),
+                                                 *_refuse_undefined(lay, "forcing", "F")])
 
 
 def _assemble(derivation: Derivation, lay: Layout, parts: Sequence[str]) -> Assembly:

@@ -50,11 +50,47 @@ STATE = $state
 PARAMETERS = $parameters
 INPUTS = $inputs
 DEFAULTS = $defaults
-$functions''')
+$undefined$functions''')
+
+# Where the model is undefined, every target says so in its own way
+# (docs/generated-code.md, "Undefined points"); here one exception class.
+UNDEFINED = '''
+
+class UndefinedPointError(ValueError):
+    """The equations are undefined at this point: a number they compute is not
+    finite (a function outside its domain, a division by zero, an overflow, a
+    NaN or infinity given) or M is not positive definite."""
+
+
+class SingularMassMatrixError(UndefinedPointError, numpy.linalg.LinAlgError):
+    """M is not positive definite at this point."""
+
+
+def _defined(function):
+    """function(t, x, p, r) on floats, raising UndefinedPointError where it is undefined."""
+    @functools.wraps(function)
+    def checked(t, x, p, r=()):
+        if callable(r):
+            r = r(t, x)
+        x, p, r = tuple(map(float, x)), tuple(map(float, p)), tuple(map(float, () if r is None else r))
+        if (len(x), len(p), len(r)) != (len(STATE), len(PARAMETERS), len(INPUTS)):
+            raise ValueError(f"expected {len(STATE)} states, {len(PARAMETERS)} parameters and "
+                             f"{len(INPUTS)} inputs; got {len(x)}, {len(p)} and {len(r)}")
+        try:
+            out = function(t, x, p, r)
+        except UndefinedPointError:
+            raise
+        except (ArithmeticError, ValueError, TypeError) as error:  # math's domain errors; a complex power
+            raise UndefinedPointError(f"{function.__name__} is undefined at t = {t!r}: {error}") from None
+        if not numpy.isfinite(out).all():
+            raise UndefinedPointError(f"{function.__name__} is undefined at t = {t!r}: a value is not finite")
+        return out
+    return checked
+'''
 
 FUNCTION = Template('''
 
-def $name(t, x, p, r=()):
+${decorator}def $name(t, x, p, r=()):
     """$doc"""
 $body
 ''')
@@ -66,9 +102,12 @@ def _cholesky_solve(M, F):
 
     Only the lower triangle of M is read (its rows may stop at the
     diagonal); M = L L^T is factored in place, L over that triangle. Raises
-    numpy.linalg.LinAlgError when a pivot is not positive. Plain loops: for
-    the few rates of a mechanical system they beat NumPy's call overhead.
+    UndefinedPointError when an entry is not finite, SingularMassMatrixError
+    when a pivot is not positive. Plain loops: for the few rates of a mechanical system they
+    beat NumPy's call overhead.
     """
+    if not all(map(math.isfinite, F)) or not all(math.isfinite(v) for row in M for v in row):
+        raise UndefinedPointError("M or F is not finite")
     k = len(F)
     for j in range(k):
         Mj = M[j]
@@ -76,7 +115,7 @@ def _cholesky_solve(M, F):
         for s in range(j):
             d -= Mj[s] * Mj[s]
         if not d > 0.0:
-            raise numpy.linalg.LinAlgError("the mass matrix is not positive definite")
+            raise SingularMassMatrixError("the mass matrix is not positive definite")
         d = math.sqrt(d)
         Mj[j] = d
         for i in range(j + 1, k):
@@ -122,9 +161,9 @@ def emit_python(derivation: Derivation, *, reactions: bool = False) -> dict[str,
         functions.insert(3, _reactions(derivation, lay))
     text = MODULE.substitute(
         header="\n".join(f"# {line}" for line in header_lines(derivation, "python")),
-        name=lay.system, k=lay.k, mass=mass_arguments(derivation), imports="import math\n\nimport numpy",
+        name=lay.system, k=lay.k, mass=mass_arguments(derivation), imports="import functools\nimport math\n\nimport numpy",
         state=python_tuple(lay.state), parameters=python_tuple(lay.parameters), inputs=python_tuple(lay.r),
-        defaults=python_dict(lay.defaults), functions="".join(functions),
+        defaults=python_dict(lay.defaults), undefined=UNDEFINED, functions="".join(functions),
     )
     return {f"{lay.system}.py": text}
 
@@ -225,7 +264,8 @@ def _prologue(lay: Layout, block: Block) -> list[str]:
 
 def _function(name: str, lay: Layout, body: Sequence[str]) -> str:
     doc = DOCS[name].format(k=lay.k, nx=len(lay.state))
-    return FUNCTION.substitute(name=name, doc=doc, body="\n".join(INDENT + line for line in body))
+    decorator = "" if name == "reactions" else "@_defined\n"
+    return FUNCTION.substitute(decorator=decorator, name=name, doc=doc, body="\n".join(INDENT + line for line in body))
 
 
 def _rows(results: Sequence[str], k: int) -> list[str]:

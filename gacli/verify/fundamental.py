@@ -14,7 +14,9 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from gacli.algebra import fastdiff
 from gacli.algebra import symbols as S
+from gacli.algebra.canonical import mul
 from gacli.model import Form, System
 from gacli.numeric.compiled import Compiled
 
@@ -56,70 +58,98 @@ def function_rates(system: System) -> dict[sp.Symbol, sp.Symbol]:
 
 
 class _Motion:
-    """Velocities and their projections on the partial rates ∂/∂ṙ_j, with no rate eliminated."""
+    """Each velocity as partials and rest, v = P ṙ + v₀, with no rate eliminated.
+
+    The mass and inertial terms are formed from P and from d/dt of v at
+    r̈ = 0, never by differentiating Σ m a·∂v/∂ṙ with respect to r̈: that
+    expression is a product of every body's chain of rotations, and its
+    Jacobian cost minutes for ten frames with origins. The derivatives are
+    memoised walks (:mod:`gacli.algebra.fastdiff`), shared by all bodies,
+    so a chain's common subexpressions are differentiated once.
+    """
 
     def __init__(self, system: System) -> None:
         self.names = system.rate_names
-        coords = [c.name for c in system.coordinates]
-        self.q = [S.value(c) for c in coords]
-        self.qdot = sp.Matrix([S.rate(c) for c in coords]) if coords else sp.zeros(0, 1)
+        coords = {c.name for c in system.coordinates}
+        # The partials ∂r/∂ṙ_j: a position moves with its coordinates only.
+        self.q = [S.value(n) if n in coords else None for n in self.names]
         self.functions = function_rates(system)
-        # Full total derivative: q → q̇, every ṙ → r̈, the free functions, t.
-        self.chain = {S.value(c): S.rate(c) for c in coords}
-        self.chain.update({S.rate(n): S.rate(n, 2) for n in self.names})
-        self.chain.update(self.functions)
+        # d/dt at r̈ = 0: q → q̇, the free functions, t; the rates are held.
+        chain = {S.value(c): S.rate(c) for c in coords}
+        chain.update(self.functions)
+        self.d_dt_rest = S.time_differentiator(chain)
+        self.d_dt_functions = S.time_differentiator(self.functions)
 
-    def d_dt(self, m: sp.Matrix) -> sp.Matrix:
-        return m.applyfunc(lambda e: S.time_derivative(e, self.chain))
+    def partials(self, position) -> sp.Matrix:
+        """∂r/∂ṙ_j = ∂r/∂q_j for the coordinates, zero for the quasi-coordinates (3 × N)."""
+        symbols = [s for s in self.q if s is not None]
+        rows = fastdiff.jacobian_rows(position, symbols) if symbols else [[] for _ in range(3)]
+        out = sp.zeros(3, len(self.names))
+        for j, col in enumerate(i for i, s in enumerate(self.q) if s is not None):
+            for i in range(3):
+                out[i, col] = rows[i][j]
+        return out
 
-    def velocity(self, position) -> sp.Matrix:
-        r = sp.Matrix(position)
-        J = r.jacobian(self.q) if self.q else sp.zeros(3, 0)
-        return J * self.qdot + r.applyfunc(lambda e: S.time_derivative(e, self.functions))
+    def velocity(self, position, P: sp.Matrix) -> sp.Matrix:
+        rates = sp.Matrix([S.rate(n) for n in self.names]) if self.names else sp.zeros(0, 1)
+        return _transposed_times(P.T, rates) + sp.Matrix(position).applyfunc(self.d_dt_functions)
 
-    def angular_velocity(self, rotation: tuple[Form, Form, Form]) -> sp.Matrix:
-        return sp.Matrix([sum((f.coefficient(n) * S.rate(n) for n in self.names), f.dt) for f in rotation])
+    def rotation_partials(self, rotation: tuple[Form, Form, Form]) -> tuple[sp.Matrix, sp.Matrix]:
+        """W and ω = W ṙ + ω₀ of a rotation's forms."""
+        W = sp.Matrix(3, len(self.names), lambda i, j: rotation[i].coefficient(self.names[j]))
+        rates = sp.Matrix([S.rate(n) for n in self.names]) if self.names else sp.zeros(0, 1)
+        return W, _transposed_times(W.T, rates) + sp.Matrix([f.dt for f in rotation])
 
-    def along(self, vector: sp.Matrix, v: sp.Matrix) -> list[sp.Expr]:
-        """vector · ∂v/∂ṙ_j for every rate j."""
-        return [(vector.T * v.diff(S.rate(n)))[0] for n in self.names]
+    def rest(self, m: sp.Matrix) -> sp.Matrix:
+        """d/dt of ``m`` at r̈ = 0."""
+        return m.applyfunc(self.d_dt_rest)
 
 
-def _inertia_terms(system: System, motion: _Motion) -> list[sp.Expr]:
-    """Σ_bodies m a·∂v/∂ṙ_j + (Iα + ω×Iω)·∂ω/∂ṙ_j for every rate j."""
-    lhs = [sp.S.Zero] * len(motion.names)
+def _transposed_times(U: sp.Matrix, v: sp.Matrix, scale=sp.S.One) -> sp.Matrix:
+    """scale · Uᵀ v, each entry one sum of canonical products.
+
+    SymPy's matrix product asks the assumptions of every product of two
+    large sums (is it zero?), which cost more than all the derivatives of a
+    chain of ten frames.
+    """
+    out = sp.zeros(U.cols, v.cols)
+    for i in range(U.cols):
+        for j in range(v.cols):
+            out[i, j] = sp.Add(*(mul(scale, U[k, i], v[k, j]) for k in range(U.rows) if U[k, i] != 0 and v[k, j] != 0))
+    return out
+
+
+def _inertia_terms(system: System, motion: _Motion) -> tuple[sp.Matrix, sp.Matrix]:
+    """Σ_bodies m PᵀP + WᵀIW and Σ m Pᵀ a₀ + Wᵀ(I α₀ + ω×Iω): the mass and the rest at r̈ = 0."""
+    N = len(motion.names)
+    mass, inertial = sp.zeros(N, N), sp.zeros(N, 1)
     for body in system.bodies:
-        v = motion.velocity(body.position)
-        for j, term in enumerate(motion.along(body.mass * motion.d_dt(v), v)):
-            lhs[j] += term
+        P = motion.partials(body.position)
+        mass += _transposed_times(P, P, body.mass)
+        inertial += _transposed_times(P, motion.rest(motion.velocity(body.position, P)), body.mass)
         if body.is_rigid:
-            w = motion.angular_velocity(body.rotation)
+            W, w = motion.rotation_partials(body.rotation)
             I = sp.Matrix(body.inertia)
-            euler = I * motion.d_dt(w) + w.cross(I * w)
-            for j, term in enumerate(motion.along(euler, w)):
-                lhs[j] += term
-    return lhs
+            mass += _transposed_times(W, _transposed_times(I.T, W))
+            inertial += _transposed_times(W, _transposed_times(I.T, motion.rest(w)) + w.cross(_transposed_times(I.T, w)))
+    return mass, inertial
 
 
-def _load_terms(system: System, motion: _Motion) -> list[sp.Expr]:
+def _load_terms(system: System, motion: _Motion) -> sp.Matrix:
     """Q̃_j, the generalized force of the loads on every unreduced rate j (eq. 14.13)."""
     names = motion.names
-    loads = [sp.S.Zero] * len(names)
+    loads = sp.zeros(len(names), 1)
     bodies = {b.name: b for b in system.bodies}
     for force in system.forces:
-        for j, term in enumerate(motion.along(sp.Matrix(force.vector), motion.velocity(force.point))):
-            loads[j] += term
+        loads += _transposed_times(motion.partials(force.point), sp.Matrix(force.vector))
     for torque in system.torques:
-        w = motion.angular_velocity(bodies[torque.body].rotation)
-        for j, term in enumerate(motion.along(sp.Matrix(torque.vector), w)):
-            loads[j] += term
+        W, _ = motion.rotation_partials(bodies[torque.body].rotation)
+        loads += _transposed_times(W, sp.Matrix(torque.vector))
     if system.work is not None:
-        for j, n in enumerate(names):
-            loads[j] += system.work.coefficient(n)
-    coords = {c.name for c in system.coordinates}
-    for j, n in enumerate(names):
-        if n in coords and system.potential != 0:
-            loads[j] -= sp.diff(system.potential, S.value(n))
+        loads += sp.Matrix([system.work.coefficient(n) for n in names])
+    if system.potential != 0:
+        gradient = motion.partials([system.potential, 0, 0])
+        loads -= gradient[0, :].T
     return loads
 
 
@@ -139,20 +169,17 @@ def fundamental_equations(system: System) -> FundamentalEquations:
     motion = _Motion(system)
     names = motion.names
     N = len(names)
-    accelerations = [S.rate(n, 2) for n in names]
-    lhs_m = sp.Matrix(_inertia_terms(system, motion))
-    zero = {a: 0 for a in accelerations}
-    mass = lhs_m.jacobian(accelerations) if N else sp.zeros(0, 0)
-    inertial = lhs_m.xreplace(zero)
+    mass, inertial = _inertia_terms(system, motion)
     rows = _relations(system, names)
     A = sp.Matrix([[form.coefficient(n) for n in names] for _, form in rows]) if rows else sp.zeros(0, N)
     a0 = sp.Matrix([form.dt for _, form in rows]) if rows else sp.zeros(0, 1)
     relation = A * sp.Matrix([S.rate(n) for n in names]) + a0 if rows else sp.zeros(0, 1)
-    relation_rest = motion.d_dt(relation).xreplace(zero) if rows else sp.zeros(0, 1)
+    # d/dt at r̈ = 0 is the rest; a row nonlinear in the rates has A = ∂g/∂ṙ, and holding them is the same.
+    relation_rest = motion.rest(relation) if rows else sp.zeros(0, 1)
     return FundamentalEquations(
         names=tuple(names), relations=tuple(r for r, _ in rows), constraint_count=len(system.constraints),
         mass=sp.ImmutableMatrix(mass), inertial=sp.ImmutableMatrix(inertial),
-        loads=sp.ImmutableMatrix(sp.Matrix(_load_terms(system, motion))), A=sp.ImmutableMatrix(A),
+        loads=sp.ImmutableMatrix(_load_terms(system, motion)), A=sp.ImmutableMatrix(A),
         a0=sp.ImmutableMatrix(a0), relation_rest=sp.ImmutableMatrix(relation_rest),
     )
 

@@ -50,6 +50,41 @@ static int cylinder_in_cylinder_cholesky_solve(double *M, double *F)
     return 0;
 }
 
+/* The end of rhs: xdot holds q' and F (its last NU entries), M the lower
+   triangle of the mass matrix. Returns what rhs returns: -1 when an entry
+   is not finite, before or after the solve, else the Cholesky solve's. */
+static int cylinder_in_cylinder_solved(double *M, double *xdot)
+{
+    const int k = CYLINDER_IN_CYLINDER_NU, n = CYLINDER_IN_CYLINDER_NX;
+    int i, j, status = 0;
+    for (i = 0; i < n; ++i) {
+        if (!isfinite(xdot[i])) {
+            status = -1;
+        }
+    }
+    for (i = 0; i < k; ++i) {
+        for (j = 0; j <= i; ++j) {
+            if (!isfinite(M[i*k + j])) {
+                status = -1;
+            }
+        }
+    }
+    if (status == 0) {
+        status = cylinder_in_cylinder_cholesky_solve(M, xdot + (n - k));
+    }
+    for (i = 0; status == 0 && i < n; ++i) {
+        if (!isfinite(xdot[i])) {
+            status = -1;
+        }
+    }
+    if (status != 0) {
+        for (i = 0; i < n; ++i) {
+            xdot[i] = NAN;
+        }
+    }
+    return status;
+}
+
 int cylinder_in_cylinder_default_parameters(double *p)
 {
     p[CYLINDER_IN_CYLINDER_P_M] = 1.0;
@@ -100,5 +135,5 @@ int cylinder_in_cylinder_rhs(double t, const double *x, const double *p,
     xdot[1] = c*dot_theta/a;
     M[0] = (3.0/2.0)*M_*pow(c, 2);
     F[0] = -M_*c*g*sin(theta);
-    return cylinder_in_cylinder_cholesky_solve(M, F);
+    return cylinder_in_cylinder_solved(M, xdot);
 }

@@ -46,8 +46,10 @@ void cylinder_in_cylinder_forcing(double t, const double *x, const double *p,
                                   const double *r, double *F);
 
 /* xdot = [q', u'], NX entries, with M u' = F solved by Cholesky.
-   Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive:
-   M is not positive definite, and the u' part of xdot is not valid. */
+   Returns 0; or n > 0 when pivot n (counting from 1) of M is not positive
+   (M is not positive definite); or -1 when a number it computes is not
+   finite (a function outside its domain, a division by zero, an overflow,
+   NaN or infinity given). On a nonzero return every entry of xdot is NaN. */
 int cylinder_in_cylinder_rhs(double t, const double *x, const double *p,
                              const double *r, double *xdot);
 

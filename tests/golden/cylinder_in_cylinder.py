@@ -11,6 +11,7 @@ x = STATE is (q, u); p = PARAMETERS; r = INPUTS, given as a sequence or as
 a callable r(t, x) that returns one.
 """
 
+import functools
 import math
 
 import numpy
@@ -21,6 +22,39 @@ INPUTS = ()
 DEFAULTS = {"M": 1.0, "g": 9.81, "a": 0.1, "b": 0.5, "c": 0.4}
 
 
+class UndefinedPointError(ValueError):
+    """The equations are undefined at this point: a number they compute is not
+    finite (a function outside its domain, a division by zero, an overflow, a
+    NaN or infinity given) or M is not positive definite."""
+
+
+class SingularMassMatrixError(UndefinedPointError, numpy.linalg.LinAlgError):
+    """M is not positive definite at this point."""
+
+
+def _defined(function):
+    """function(t, x, p, r) on floats, raising UndefinedPointError where it is undefined."""
+    @functools.wraps(function)
+    def checked(t, x, p, r=()):
+        if callable(r):
+            r = r(t, x)
+        x, p, r = tuple(map(float, x)), tuple(map(float, p)), tuple(map(float, () if r is None else r))
+        if (len(x), len(p), len(r)) != (len(STATE), len(PARAMETERS), len(INPUTS)):
+            raise ValueError(f"expected {len(STATE)} states, {len(PARAMETERS)} parameters and "
+                             f"{len(INPUTS)} inputs; got {len(x)}, {len(p)} and {len(r)}")
+        try:
+            out = function(t, x, p, r)
+        except UndefinedPointError:
+            raise
+        except (ArithmeticError, ValueError, TypeError) as error:  # math's domain errors; a complex power
+            raise UndefinedPointError(f"{function.__name__} is undefined at t = {t!r}: {error}") from None
+        if not numpy.isfinite(out).all():
+            raise UndefinedPointError(f"{function.__name__} is undefined at t = {t!r}: a value is not finite")
+        return out
+    return checked
+
+
+@_defined
 def mass_matrix(t, x, p, r=()):
     """The mass matrix M, shape (1, 1), symmetric positive definite."""
     M_, g, a, b, c = map(float, p)
@@ -29,6 +63,7 @@ def mass_matrix(t, x, p, r=()):
     ], dtype=float)
 
 
+@_defined
 def forcing(t, x, p, r=()):
     """The forcing F of M u' = F, shape (1,)."""
     theta, phi, dot_theta = map(float, x)
@@ -38,6 +73,7 @@ def forcing(t, x, p, r=()):
     ], dtype=float)
 
 
+@_defined
 def rhs(t, x, p, r=()):
     """d(x)/dt = [q', u'] with M u' = F solved by Cholesky, shape (3,)."""
     theta, phi, dot_theta = map(float, x)
@@ -60,9 +96,12 @@ def _cholesky_solve(M, F):
 
     Only the lower triangle of M is read (its rows may stop at the
     diagonal); M = L L^T is factored in place, L over that triangle. Raises
-    numpy.linalg.LinAlgError when a pivot is not positive. Plain loops: for
-    the few rates of a mechanical system they beat NumPy's call overhead.
+    UndefinedPointError when an entry is not finite, SingularMassMatrixError
+    when a pivot is not positive. Plain loops: for the few rates of a mechanical system they
+    beat NumPy's call overhead.
     """
+    if not all(map(math.isfinite, F)) or not all(math.isfinite(v) for row in M for v in row):
+        raise UndefinedPointError("M or F is not finite")
     k = len(F)
     for j in range(k):
         Mj = M[j]
@@ -70,7 +109,7 @@ def _cholesky_solve(M, F):
         for s in range(j):
             d -= Mj[s] * Mj[s]
         if not d > 0.0:
-            raise numpy.linalg.LinAlgError("the mass matrix is not positive definite")
+            raise SingularMassMatrixError("the mass matrix is not positive definite")
         d = math.sqrt(d)
         Mj[j] = d
         for i in range(j + 1, k):

@@ -11,4 +11,7 @@ function F = cylinder_in_cylinder_forcing(t, x, p, r)
   F = [
     -M_.*c.*g.*sin(theta);
   ];
+  if ~all(isfinite(F)) || ~isreal(F)
+    error('gacli:undefined', 'cylinder_in_cylinder_forcing: undefined at t = %g: a value is not a finite real number', t);
+  end
 end

@@ -27,13 +27,20 @@ INPUTS = ()
 DEFAULTS = {"M": 1.0, "g": 9.81, "a": 0.1, "b": 0.5, "c": 0.4}
 
 
+def _defined(values):
+    """values, or NaN in every entry when one of them is not finite: the equations
+    are undefined there (a function outside its domain, a division by zero, an
+    overflow, NaN given, or M not positive definite). jax.jit cannot raise."""
+    return jax.numpy.where(jax.numpy.all(jax.numpy.isfinite(values)), values, jax.numpy.nan)
+
+
 def mass_matrix(t, x, p, r=()):
     """The mass matrix M, shape (1, 1), symmetric positive definite."""
     M_ = p[0]
     c = p[4]
     M = jax.numpy.zeros((1, 1))
     M = M.at[0, 0].set((3/2)*M_*c**2)
-    return M
+    return _defined(M)
 
 
 def forcing(t, x, p, r=()):
@@ -42,9 +49,10 @@ def forcing(t, x, p, r=()):
     M_ = p[0]
     g = p[1]
     c = p[4]
-    return jax.numpy.array([
+    F = jax.numpy.array([
         -M_*c*g*jax.numpy.sin(theta),
     ])
+    return _defined(F)
 
 
 def rhs(t, x, p, r=()):
@@ -66,4 +74,4 @@ def rhs(t, x, p, r=()):
         c*dot_theta/a,
     ])
     u_dot = jax.scipy.linalg.cho_solve(jax.scipy.linalg.cho_factor(M, lower=True), F)
-    return jax.numpy.concatenate([qdot, u_dot])
+    return _defined(jax.numpy.concatenate([qdot, u_dot]))

@@ -8,4 +8,7 @@ function M = cylinder_in_cylinder_mass_matrix(t, x, p, r)
   c = p(5);
   M = zeros(1, 1);
   M(1, 1) = 3*M_.*c.^2/2;
+  if ~all(isfinite(M(:))) || ~isreal(M(:))
+    error('gacli:undefined', 'cylinder_in_cylinder_mass_matrix: undefined at t = %g: a value is not a finite real number', t);
+  end
 end

@@ -15,10 +15,20 @@ function xdot = cylinder_in_cylinder_rhs(t, x, p, r)
   F = [
     -M_.*c.*g.*sin(theta);
   ];
-  L = chol(M, 'lower');  % M = L*L', reading only the lower triangle; an error unless M is positive definite
   xdot = [
     dot_theta;
     c.*dot_theta./a;
-    L' \ (L \ F);
+    F;
   ];
+  if ~all(isfinite([xdot; M(:)])) || ~isreal([xdot; M(:)])
+    error('gacli:undefined', 'cylinder_in_cylinder_rhs: undefined at t = %g: a value is not a finite real number', t);
+  end
+  [L, flag] = chol(M, 'lower');  % M = L*L', reading only the lower triangle
+  if flag ~= 0
+    error('gacli:undefined', 'cylinder_in_cylinder_rhs: the mass matrix is not positive definite at t = %g (pivot %d)', t, flag);
+  end
+  xdot(3:end) = L' \ (L \ F);
+  if ~all(isfinite(xdot)) || ~isreal(xdot)
+    error('gacli:undefined', 'cylinder_in_cylinder_rhs: undefined at t = %g: a value is not a finite real number', t);
+  end
 end
