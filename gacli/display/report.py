@@ -14,7 +14,8 @@ import sympy as sp
 
 from gacli.display import printed
 from gacli.mechanics.equations import Derivation
-from gacli.algebra.readable import TOO_LARGE, Tidy, displayable, show
+from gacli.algebra.readable import Tidy, displayable, show
+from gacli.display import long as L
 from gacli.algebra.symbols import rate_name
 
 
@@ -121,20 +122,37 @@ def kinematic(d: Derivation) -> Section:
                    tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",))
 
 
-def too_large() -> Section:
-    return Section("Equations", (TOO_LARGE,))
+def long_form(d: Derivation):
+    """The named form (:mod:`gacli.display.named`) when the equations written out would print
+    past :func:`gacli.display.long.limit`, and it prints shorter; None otherwise."""
+    if displayable(d):
+        limit = L.limit(d)
+        if printed.coefficients(d, limit) is not None:
+            closed = L.printed_length((rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d)))
+            if closed <= limit:
+                return None
+            named = L.named_of(d)
+            return named if L.printed_length(named_sections(d, named)) < closed else None
+    return L.named_of(d)
+
+
+def named_sections(d: Derivation, named) -> tuple[Section, ...]:
+    return tuple(Section(title, lines) for title, lines in L.parts(d, named))
 
 
 def derivation_report(d: Derivation) -> tuple[Section, ...]:
-    """The results of the chapter's solution procedure (section 14.3)."""
-    if not displayable(d):
-        return (freedom(d), too_large())
+    """The results of the chapter's solution procedure (section 14.3); through named
+    quantities when written out they would be long (:mod:`gacli.display.long`)."""
+    named = long_form(d)
+    if named is not None:
+        return (freedom(d), *named_sections(d, named))
     return (freedom(d), rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
-    if not displayable(d):
-        return (too_large(),)
+    named = long_form(d)
+    if named is not None:
+        return (Section(GIBBS_TITLE, L.gibbs_lines(d)), *named_sections(d, named))
     return (gibbs(d),)
 
 
@@ -142,8 +160,12 @@ def steps_report(d: Derivation) -> tuple[Section, ...]:
     """The worked solution (:mod:`gacli.display.steps`) as text sections."""
     from gacli.display.steps import worked_solution
 
-    if not displayable(d):
-        return (freedom(d), too_large())
+    named = long_form(d)
+    if named is not None:
+        note = Section("Worked solution", (
+            "The steps' closed forms are too long to read written out; the equations are written "
+            "through the quantities they are built from instead (docs/printing.md).",))
+        return (freedom(d), note, *named_sections(d, named))
     return tuple(Section(step.title, tuple(_line(i) for i in step.items)) for step in worked_solution(d))
 
 
