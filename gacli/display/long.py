@@ -44,8 +44,7 @@ def named_of(d) -> N.Named:
 def parts(d, named: N.Named) -> tuple[tuple[str, tuple[str, ...]], ...]:
     """(title, lines) of the named form's sections."""
     return (("Named quantities, each computed once, in order (docs/printing.md)", quantity_lines(named)),
-            ("Kinematic equations, eq. (14.20)", tuple(f"{rate_name(q, 1)} = {show(e)}" for q, e in named.rates)
-             or ("(every coordinate is independent: its rate is one of the speeds)",)),
+            ("Kinematic equations, eq. (14.20)", kinematic_lines(d, named)),
             (f"Gibbs-Appell equations, eq. (14.19), as M u' = F with u = ({', '.join(d.independent)})",
              equation_lines(d, named)))
 
@@ -59,6 +58,14 @@ def quantity_lines(named: N.Named) -> tuple[str, ...]:
         said = q.about
         lines.append(f"{q.symbol.name} = {show(q.value)}")
     return tuple(lines) or ("(none: M and F are short enough as they are)",)
+
+
+def kinematic_lines(d, named: N.Named) -> tuple[str, ...]:
+    lines = [f"{rate_name(q, 1)} = {show(e)}" for q, e in named.rates]
+    above = [q.symbol.name for q in named.quantities if q.symbol.name.startswith("dot(")]
+    if above:
+        lines.append(f"({', '.join(above)}: named above)")
+    return tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",)
 
 
 def mass_name(r: int, s: int) -> str:

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.graph import postorder, shared_subexpressions, substitute
+from gacli.algebra.graph import free_symbols, postorder, shared_subexpressions, substitute
 
 AXES = "xyz"
 
@@ -207,22 +207,39 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     dependent rate's expression, where it stands whole in them, named by its rate."""
     namer = _Namer(taken | {S.rate(n).name for n in dependent})
     by_rate = {e: S.rate(n) for n, e in dependent.items() if not e.is_Atom}
+    named = [n for n, e in dependent.items() if e in by_rate]
     entries = [e for _, e in mass]
     exprs = [*(e for _, e in kinematic), *entries, *forcing]
     exprs = substitute(exprs, by_rate) if by_rate else list(exprs)
-    rate_values = substitute([e for n, e in dependent.items() if S.rate(n) in by_rate.values()], by_rate)
+    # Each rate's value with the other rates named in it, never itself.
+    rate_values = [substitute([dependent[n]], {e: r for e, r in by_rate.items() if r != S.rate(n)})[0] for n in named]
     replacements, reduced = shared_subexpressions([*rate_values, *exprs], iter(lambda: namer.fresh(), None))
     rate_values, exprs = reduced[:len(rate_values)], reduced[len(rate_values):]
     inline = {s: v for s, v in replacements if is_inline(v)}
     quantities = [Quantity(s, _through(v, inline)) for s, v in replacements if s not in inline]
-    named_rates = [n for n, e in dependent.items() if S.rate(n) in by_rate.values()]
     quantities += [Quantity(S.rate(n), _through(v, inline), f"rate of {n}, eq. (14.7)")
-                   for n, v in zip(named_rates, rate_values)]
+                   for n, v in zip(named, rate_values)]
     exprs = [_through(e, inline) for e in exprs]
     n, m = len(kinematic), len(entries)
     rates = tuple((q, e) for (q, _), e in zip(kinematic, exprs[:n]) if e != S.rate(q))
-    return Named(tuple(quantities), rates, tuple(zip((key for key, _ in mass), exprs[n:n + m])),
+    return Named(_in_order(quantities), rates, tuple(zip((key for key, _ in mass), exprs[n:n + m])),
                  tuple(exprs[n + m:]), "closed")
+
+
+def _in_order(quantities: list[Quantity]) -> tuple[Quantity, ...]:
+    """The quantities each after every name its value holds (a rate named after the shared pieces
+    of its value, before the pieces that hold it), otherwise in the order given."""
+    names = {q.symbol for q in quantities}
+    needs = [{s for s in free_symbols([q.value]) if s in names and s != q.symbol} for q in quantities]
+    done: set[sp.Symbol] = set()
+    out: list[Quantity] = []
+    waiting = list(range(len(quantities)))
+    while waiting:
+        i = next((i for i in waiting if needs[i] <= done), waiting[0])  # a cycle cannot occur: first
+        waiting.remove(i)
+        out.append(quantities[i])
+        done.add(quantities[i].symbol)
+    return tuple(out)
 
 
 def _through(e: sp.Expr, inline: dict) -> sp.Expr:
