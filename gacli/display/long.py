@@ -20,6 +20,8 @@ CHARS_PER_OPERATION = 25
 # A printout this short is taken as within the bound whatever its operations: a handful
 # of operations still comes with the report's titles and its degrees of freedom (~500 characters).
 SMALL_PRINTOUT = 2_000
+# Written out, a line of more characters than this (a screenful) is named through its pieces instead.
+LONGEST_LINE = 2_000
 
 
 def limit(d) -> int:
@@ -94,3 +96,7 @@ def gibbs_lines(d) -> tuple[str, ...]:
 def printed_length(sections) -> int:
     """Characters of sections as ``gacli derive`` prints them (two spaces before each line)."""
     return sum(len(s.title) + 1 + sum(len(line) + 3 for line in s.lines) for s in sections)
+
+
+def longest_line(sections) -> int:
+    return max((len(line) for s in sections for line in s.lines), default=0)

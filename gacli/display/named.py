@@ -75,21 +75,22 @@ def point_words(point: str) -> str:
     return point
 
 
-def _pass(key: str) -> tuple[str, str]:
-    """(name suffix, words) of a pass of rates (gacli.mechanics.program.vectors.Pass)."""
+def _pass(key: str) -> tuple[str, str, str]:
+    """(name suffix, words before, words after) of a pass of rates (gacli.mechanics.program.vectors.Pass)."""
     if key == "actual":
-        return "", ""
+        return "", "", ""
     if key == "gamma":
-        return "_gamma", " from the dependent accelerations' velocity terms (eq. 14.14)"
+        return "_gamma", "", " for the dependent accelerations' velocity terms (eq. 14.14)"
     if key.startswith("u_"):
-        return f"_{key[2:]}", f" partial, for the speed dot({key[2:]}) (eq. 14.8)"
+        return f"_{key[2:]}", "partial ", f" for the speed dot({key[2:]}) (eq. 14.8)"
     if key.startswith("e_"):
-        return f"_unit_{key[2:]}", f" for a unit rate of {key[2:]} (the rolling rows)"
-    return f"_{key}", f" for the rates {key}"
+        return f"_unit_{key[2:]}", "", f" per unit rate of {key[2:]} (the rolling rows)"
+    return f"_{key}", "", f" for the rates {key}"
 
 
-_WHAT = {"w": "angular velocity", "alpha": "angular acceleration, every acceleration zero,",
-         "v": "velocity", "a": "acceleration, every acceleration zero,"}
+_WHAT = {"w": "angular velocity", "alpha": "angular acceleration", "v": "velocity", "a": "acceleration"}
+# The velocity-product part of an acceleration (eq. 14.14): what it is with every acceleration zero.
+_REST = {"alpha": ", every acceleration zero", "a": ", every acceleration zero"}
 
 
 def label_name(label: tuple) -> tuple[str, str, str]:
@@ -97,14 +98,16 @@ def label_name(label: tuple) -> tuple[str, str, str]:
     kind = label[0]
     if kind in ("w", "alpha"):
         _, frame, key, i = label
-        suffix, words = _pass(key)
+        suffix, before, after = _pass(key)
         base = identifier(f"{kind[:2]}_{frame}{suffix}")
-        return f"{base}_{AXES[i]}", base, f"{_WHAT[kind]} of {frame}{words}, along {frame}'s axes"
+        words = f"{before}{_WHAT[kind]} of {frame}{after}{_REST.get(kind, '')}, along {frame}'s axes"
+        return f"{base}_{AXES[i]}", base, words
     if kind in ("v", "a"):
         _, point, key, frame, i = label
-        suffix, words = _pass(key)
+        suffix, before, after = _pass(key)
         base = identifier(f"{kind}_{point.rstrip('@')}{suffix}")
-        return f"{base}_{AXES[i]}", base, f"{_WHAT[kind]} of {point_words(point)}{words}, along {frame}'s axes"
+        words = f"{before}{_WHAT[kind]} of {point_words(point)}{after}{_REST.get(kind, '')}, along {frame}'s axes"
+        return f"{base}_{AXES[i]}", base, words
     if kind == "r":
         _, point, frame, i = label
         base = identifier(f"r_{point}")

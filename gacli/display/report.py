@@ -124,16 +124,22 @@ def kinematic(d: Derivation) -> Section:
 
 def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
-    past :func:`gacli.display.long.limit`, and it prints shorter; None otherwise."""
-    if displayable(d):
-        limit = L.limit(d)
-        if printed.coefficients(d, limit) is not None:
-            closed = L.printed_length((rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d)))
-            if closed <= limit:
-                return None
-            named = L.named_of(d)
-            return named if L.printed_length(named_sections(d, named)) < closed else None
-    return L.named_of(d)
+    past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
+    None otherwise (docs/printing.md)."""
+    if not displayable(d):
+        return L.named_of(d)
+    limit = L.limit(d)
+    if printed.coefficients(d, limit) is None:
+        return L.named_of(d)
+    closed = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
+    length, longest = L.printed_length(closed), L.longest_line(closed)
+    if length <= limit and longest <= L.LONGEST_LINE:
+        return None
+    named = L.named_of(d)
+    sections = named_sections(d, named)
+    if length > limit:
+        return named if L.printed_length(sections) < length else None
+    return named if L.printed_length(sections) <= limit and L.longest_line(sections) < longest else None
 
 
 def named_sections(d: Derivation, named) -> tuple[Section, ...]:
