@@ -106,10 +106,10 @@ def test_small_systems_print_written_out():
 
 
 @pytest.mark.parametrize("label, name, words", [
-    (("w", "rolled", "actual", 0), "w_rolled_x", "angular velocity of rolled, along rolled's axes"),
-    (("w", "fork", "u_steer", 2), "w_fork_steer_z", "partial, for the speed dot(steer)"),
+    (("w", "rolled", "actual", 0), "w_rolled_x", "angular velocity of rolled"),
+    (("w", "fork", "u_steer", 2), "w_fork_steer_z", "partial angular velocity of fork for dot(steer)"),
     (("v", "frame+rear_wheel", "actual", "head_tube", 1), "v_frame_rear_wheel_y",
-     "the mass centre of frame and rear_wheel"),
+     "velocity of the mass centre of frame and rear_wheel [head_tube]"),
     (("v", "bob@", "u_q", "B", 0), "v_bob_q_x", "the mass centre of bob"),
 ])
 def test_labels_name_physical_quantities(label, name, words):

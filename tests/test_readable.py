@@ -30,7 +30,7 @@ def test_a_large_system_prints_through_named_quantities(args):
     assert ("w\\_rolled\\_y" if latex else "w_rolled_y = ") in result.output
     if args == ["derive"]:
         assert "k = n + p - d - l = 8 + 0 - 0 - 5 = 3" in result.output
-        assert "# partial angular velocity of fork for the speed dot(steer) (eq. 14.8), along fork's axes" in result.output
+        assert "# partial angular velocity of fork for dot(steer)\n" in result.output
 
 
 def test_reactions_of_a_large_system_are_computed_by_the_generated_code(tmp_path):

@@ -53,7 +53,7 @@ def parts(d, named: N.Named) -> tuple[tuple[str, tuple[str, ...]], ...]:
 
 def quantity_lines(named: N.Named) -> tuple[str, ...]:
     """``name = value`` in evaluation order, each vector's description once above it as ``# ...``."""
-    lines, said = [], None
+    lines, said = [N.LEGEND] if named.source == "program" else [], None
     for q in named.quantities:
         if q.about and q.about != said:
             lines.append(f"# {q.about}")

@@ -27,6 +27,7 @@ from gacli.algebra import symbols as S
 from gacli.algebra.graph import free_symbols, postorder, shared_subexpressions, substitute
 
 AXES = "xyz"
+RATES = "dependent rates, eq. (14.7)"
 
 
 @dataclass(frozen=True)
@@ -80,17 +81,20 @@ def _pass(key: str) -> tuple[str, str, str]:
     if key == "actual":
         return "", "", ""
     if key == "gamma":
-        return "_gamma", "", " for the dependent accelerations' velocity terms (eq. 14.14)"
+        return "_gamma", "", " for gamma"
     if key.startswith("u_"):
-        return f"_{key[2:]}", "partial ", f" for the speed dot({key[2:]}) (eq. 14.8)"
+        return f"_{key[2:]}", "partial ", f" for dot({key[2:]})"
     if key.startswith("e_"):
-        return f"_unit_{key[2:]}", "", f" per unit rate of {key[2:]} (the rolling rows)"
-    return f"_{key}", "", f" for the rates {key}"
+        return f"_unit_{key[2:]}", "", f" per unit dot({key[2:]})"
+    return f"_{key}", "", f" for {key}"
 
 
+# What each kind of label is, and, once for the section, what the words mean (LEGEND).
 _WHAT = {"w": "angular velocity", "alpha": "angular acceleration", "v": "velocity", "a": "acceleration"}
-# The velocity-product part of an acceleration (eq. 14.14): what it is with every acceleration zero.
-_REST = {"alpha": ", every acceleration zero", "a": ", every acceleration zero"}
+_REST = {"alpha": ", accelerations zero", "a": ", accelerations zero"}
+LEGEND = ("(a frame's angular velocity and acceleration along its own axes, a point's along the frame in "
+          "brackets; partial: for one speed, eq. (14.8); accelerations zero: the velocity-product part, "
+          "eq. (14.14); for gamma: for the dependent accelerations' part; per unit dot(q): for the rolling rows)")
 
 
 def label_name(label: tuple) -> tuple[str, str, str]:
@@ -100,22 +104,21 @@ def label_name(label: tuple) -> tuple[str, str, str]:
         _, frame, key, i = label
         suffix, before, after = _pass(key)
         base = identifier(f"{kind[:2]}_{frame}{suffix}")
-        words = f"{before}{_WHAT[kind]} of {frame}{after}{_REST.get(kind, '')}, along {frame}'s axes"
-        return f"{base}_{AXES[i]}", base, words
+        return f"{base}_{AXES[i]}", base, f"{before}{_WHAT[kind]} of {frame}{after}{_REST.get(kind, '')}"
     if kind in ("v", "a"):
         _, point, key, frame, i = label
         suffix, before, after = _pass(key)
         base = identifier(f"{kind}_{point.rstrip('@')}{suffix}")
-        words = f"{before}{_WHAT[kind]} of {point_words(point)}{after}{_REST.get(kind, '')}, along {frame}'s axes"
+        words = f"{before}{_WHAT[kind]} of {point_words(point)}{after}{_REST.get(kind, '')} [{frame}]"
         return f"{base}_{AXES[i]}", base, words
     if kind == "r":
         _, point, frame, i = label
         base = identifier(f"r_{point}")
-        return f"{base}_{AXES[i]}", base, f"position of {point_words(point)}, along {frame}'s axes"
+        return f"{base}_{AXES[i]}", base, f"position of {point_words(point)} [{frame}]"
     if kind == "I":
         _, point, frame, i, j = label
         base = identifier(f"I_{point}")
-        return f"{base}_{AXES[i]}{AXES[j]}", base, f"inertia of {point_words(point)} about it, along {frame}'s axes"
+        return f"{base}_{AXES[i]}{AXES[j]}", base, f"inertia of {point_words(point)} about it [{frame}]"
     if kind == "M":
         return f"M_{label[1] + 1}_{label[2] + 1}", "M", "mass matrix"
     if kind == "F":
@@ -182,7 +185,7 @@ def from_program(program, taken: set[str]) -> Named:
             shown[symbol] = value
             continue
         if symbol in rate_of:
-            name, about = S.rate(rate_of[symbol]), f"rate of {rate_of[symbol]}, eq. (14.7)"
+            name, about = S.rate(rate_of[symbol]), RATES
             namer.taken.add(name.name)
         elif label is not None:
             wanted, _, about = label_name(label)
@@ -220,7 +223,7 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     rate_values, exprs = reduced[:len(rate_values)], reduced[len(rate_values):]
     inline = {s: v for s, v in replacements if is_inline(v)}
     quantities = [Quantity(s, _through(v, inline)) for s, v in replacements if s not in inline]
-    quantities += [Quantity(S.rate(n), _through(v, inline), f"rate of {n}, eq. (14.7)")
+    quantities += [Quantity(S.rate(n), _through(v, inline), RATES)
                    for n, v in zip(named, rate_values)]
     exprs = [_through(e, inline) for e in exprs]
     n, m = len(kinematic), len(entries)
