@@ -11,6 +11,8 @@ subexpressions of the closed forms.
 
 from __future__ import annotations
 
+import sympy as sp
+
 from gacli.algebra.readable import show
 from gacli.algebra.symbols import rate_name
 from gacli.display import named as N
@@ -22,6 +24,23 @@ CHARS_PER_OPERATION = 25
 SMALL_PRINTOUT = 2_000
 # Written out, a line of more characters than this (a screenful) is named through its pieces instead.
 LONGEST_LINE = 2_000
+
+
+# M, F and Q of more tree nodes than this (counting stops there) are named without being tidied
+# first: tidying a 6-link spatial arm's 14,608 nodes took 9 s of its text derive only to print
+# past the bound; the systems that print written out have at most 6,001 (a robot with a castor).
+TIDIED_NODES = 10_000
+
+
+def tidy_worth_trying(d) -> bool:
+    """Whether M (r ≤ s), F and Q have at most TIDIED_NODES nodes as trees together."""
+    exprs = [e for (i, j), e in d.mass_matrix.todok().items() if j >= i]
+    count = 0
+    for e in (*exprs, *d.forcing, *d.generalized_forces):
+        for count, _ in enumerate(sp.preorder_traversal(e), start=count + 1):
+            if count > TIDIED_NODES:
+                return False
+    return True
 
 
 def limit(d) -> int:

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.readable import show
 from gacli.algebra.graph import free_symbols, postorder, shared_subexpressions, substitute
 
 AXES = "xyz"
@@ -194,7 +195,7 @@ def from_program(program, taken: set[str]) -> Named:
             name, about = namer.fresh(), ""
         shown[symbol] = name
         quantities.append(Quantity(name, value, about))
-    return _outputs(program, shown, outputs_of, tuple(quantities))
+    return short_lines(_outputs(program, shown, outputs_of, tuple(quantities)), namer)
 
 
 def _outputs(program, shown: dict, outputs_of: dict, quantities: tuple[Quantity, ...]) -> Named:
@@ -228,8 +229,46 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     exprs = [_through(e, inline) for e in exprs]
     n, m = len(kinematic), len(entries)
     rates = tuple((q, e) for (q, _), e in zip(kinematic, exprs[:n]) if e != S.rate(q))
-    return Named(_in_order(quantities), rates, tuple(zip((key for key, _ in mass), exprs[n:n + m])),
-                 tuple(exprs[n + m:]), "closed")
+    return short_lines(Named(tuple(quantities), rates, tuple(zip((key for key, _ in mass), exprs[n:n + m])),
+                             tuple(exprs[n + m:]), "closed"), namer)
+
+
+# A value printing longer than this is written through names for its longest pieces, each on
+# its own line (a rattleback's closed forms had single lines of 5,000 characters).
+LINE = 400
+# Pieces shorter than this stay in place: a name for them would save nothing.
+PIECE = 40
+
+
+def short_lines(named: Named, namer: _Namer) -> Named:
+    """``named`` with every line of at most about LINE characters (see LINE), the pieces it names
+    each before their use; quantities in an order where every name is defined before it is read."""
+    out: list[Quantity] = []
+
+    def cut(e: sp.Expr) -> sp.Expr:
+        return _cut(e, namer, out)  # its pieces go just before what reads them
+
+    for q in named.quantities:
+        value = cut(q.value)
+        out.append(Quantity(q.symbol, value, q.about))
+    rates = tuple((q, cut(e)) for q, e in named.rates)
+    mass = tuple((key, cut(e)) for key, e in named.mass)
+    forcing = tuple(cut(e) for e in named.forcing)
+    return Named(_in_order(out), rates, mass, forcing, named.source)
+
+
+def _cut(e: sp.Expr, namer: _Namer, pieces: list[Quantity]) -> sp.Expr:
+    if e.is_Atom or len(show(e)) <= LINE:
+        return e
+    args = []
+    for a in e.args:
+        if a.is_Atom or len(show(a)) < PIECE:
+            args.append(a)
+            continue
+        symbol = namer.fresh()
+        pieces.append(Quantity(symbol, _cut(a, namer, pieces)))
+        args.append(symbol)
+    return e.func(*args)
 
 
 def _in_order(quantities: list[Quantity]) -> tuple[Quantity, ...]:

@@ -126,7 +126,7 @@ def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
-    if not displayable(d):
+    if not displayable(d) or not L.tidy_worth_trying(d):
         return L.named_of(d)
     limit = L.limit(d)
     if printed.coefficients(d, limit) is None:
