@@ -128,7 +128,10 @@ def label_name(label: tuple) -> tuple[str, str, str]:
 
 
 def is_inline(value: sp.Expr) -> bool:
-    """Worth no name: a function of an atom (``cos(yaw)`` reads as well as any name for it)."""
+    """Worth no name: a function or an integer power of an atom (``cos(yaw)`` and ``r**2`` read as
+    well as any name for them)."""
+    if value.is_Pow:  # r**2, 1/w
+        return value.base.is_Atom and value.exp.is_Integer
     return isinstance(value, sp.Function) and len(value.args) == 1 and value.args[0].is_Atom
 
 
@@ -146,6 +149,7 @@ class _Namer:
 
     def __init__(self, taken: set[str]) -> None:
         self.taken = set(taken)
+        self.declared = frozenset(taken)
         self.counter = itertools.count(1)
 
     def fresh(self, wanted: str | None = None) -> sp.Symbol:
@@ -222,7 +226,10 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     rate_values = [substitute([dependent[n]], {e: r for e, r in by_rate.items() if r != S.rate(n)})[0] for n in named]
     replacements, reduced = shared_subexpressions([*rate_values, *exprs], iter(lambda: namer.fresh(), None))
     rate_values, exprs = reduced[:len(rate_values)], reduced[len(rate_values):]
-    inline = {s: v for s, v in replacements if is_inline(v)}
+    inline: dict[sp.Symbol, sp.Expr] = {}
+    for s, v in replacements:
+        if is_inline(v):
+            inline[s] = _through(v, inline)  # 1/z3 with z3 = r**2 in place too: 1/r**2
     quantities = [Quantity(s, _through(v, inline)) for s, v in replacements if s not in inline]
     quantities += [Quantity(S.rate(n), _through(v, inline), RATES)
                    for n, v in zip(named, rate_values)]
@@ -254,7 +261,25 @@ def short_lines(named: Named, namer: _Namer) -> Named:
     rates = tuple((q, cut(e)) for q, e in named.rates)
     mass = tuple((key, cut(e)) for key, e in named.mass)
     forcing = tuple(cut(e) for e in named.forcing)
-    return Named(_in_order(out), rates, mass, forcing, named.source)
+    return _renumbered(Named(_in_order(out), rates, mass, forcing, named.source), namer)
+
+
+_NUMBERED = re.compile(r"^z\d+$")
+
+
+def _renumbered(named: Named, namer: _Namer) -> Named:
+    """The unlabelled names z1, z2, ... in the order they are printed (value numbering and
+    the names written in place leave gaps)."""
+    old = [q.symbol for q in named.quantities if _NUMBERED.match(q.symbol.name)]
+    fresh = _Namer(namer.declared | {q.symbol.name for q in named.quantities if not _NUMBERED.match(q.symbol.name)})
+    mapping = {s: fresh.fresh() for s in old}
+
+    def ren(e: sp.Expr) -> sp.Expr:
+        return e.xreplace(mapping)
+
+    return Named(tuple(Quantity(mapping.get(q.symbol, q.symbol), ren(q.value), q.about) for q in named.quantities),
+                 tuple((q, ren(e)) for q, e in named.rates), tuple((key, ren(e)) for key, e in named.mass),
+                 tuple(ren(e) for e in named.forcing), named.source)
 
 
 def _cut(e: sp.Expr, namer: _Namer, pieces: list[Quantity]) -> sp.Expr:
