@@ -43,7 +43,7 @@ def test_the_bicycle_shows_its_equations_through_named_quantities(tmp_path):
     # The same LaTeX as `gacli derive --format latex`, which names the long equations' pieces.
     assert blocks(tex) == blocks(emit(d, "latex")["whipple_bicycle.tex"])
     assert "Named quantities" in tex and "M_{1,1}" in tex and "too large" not in tex
-    assert "\\mathrm{w\\_rolled\\_x}" in tex  # the lean frame's angular velocity, by its name
+    assert "\\omega_{\\mathrm{rolled},y}" in tex  # the lean frame's angular velocity, by its name
     compile_math(tex, tmp_path)
 
 

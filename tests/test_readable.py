@@ -27,7 +27,7 @@ def test_a_large_system_prints_through_named_quantities(args):
     latex = "latex" in args
     assert ("M_{1,1}" if latex else "M_1_1 = ") in result.output
     assert ("F_{3}" if latex else "F_3 = ") in result.output
-    assert ("w\\_rolled\\_y" if latex else "w_rolled_y = ") in result.output
+    assert ("\\omega_{\\mathrm{rolled},y}" if latex else "w_rolled_y = ") in result.output
     if args == ["derive"]:
         assert "k = n + p - d - l = 8 + 0 - 0 - 5 = 3" in result.output
         assert "# partial angular velocity of fork for dot(steer)\n" in result.output

@@ -2,8 +2,9 @@
 
 The same :class:`gacli.display.named.Named` as ``gacli derive`` prints: each
 quantity set once, in order, under what it is (``\\intertext``), then q̇, M
-and F written through them, then each equation. A name prints as itself in
-upright type (``\\mathrm{w\\_rolled\\_x}``), ``z_{12}``, ``M_{1,2}`` or ``F_{1}``.
+and F written through them, then each equation. A name prints as its
+letter with what it is of in a subscript (``\\omega_{\\mathrm{rolled},x}``), ``z_{12}``,
+``M_{1,2}`` or ``F_{1}``.
 """
 
 from __future__ import annotations
@@ -29,7 +30,15 @@ def tex_name(name: str) -> str:
         return f"M_{{{m[1]},{m[2]}}}"
     if m := re.match(r"^F_(\d+)$", name):
         return f"F_{{{m[1]}}}"
+    if m := _VECTOR.match(name):
+        # The quantity's letter, what it is of and for in upright script, the axis: set a third
+        # narrower than the whole name upright, so that a product of two fits a line.
+        return r"%s_{\mathrm{%s},%s}" % (_LETTER[m[1]], m[2].replace("_", r"\_"), m[3])
     return r"\mathrm{%s}" % name.replace("_", r"\_")
+
+
+_VECTOR = re.compile(r"^(w|al|v|a|r|I)_(.+)_([xyz]{1,2})$")
+_LETTER = {"w": r"\omega", "al": r"\alpha", "v": "v", "a": "a", "r": "r", "I": "I"}
 
 
 def named_printer(system, named: Named) -> GacliLatexPrinter:
