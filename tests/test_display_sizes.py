@@ -8,7 +8,8 @@ generated code evaluates after common subexpressions are shared
 and no line is longer than a screenful. A printout of at most 2,000 characters
 is within the bound whatever its operations (docs/printing.md: a handful of
 operations still comes with the report's titles and degrees of freedom).
-The Kane set of ``benchmarks/kane_set`` is measured by its benchmark.
+The Kane set of ``benchmarks/kane_set`` is held to the same bound here; its
+text derive's time is measured by its benchmark, not by a test.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ from gacli.pipeline import run
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted([*(ROOT / "systems").glob("*.yaml"), *(ROOT / "tests" / "cases").glob("*.yaml"),
                 *(ROOT / "tests" / "frames").glob("*.yaml"), *(ROOT / "tests" / "twins").glob("*.yaml"),
-                *(ROOT / "tests" / "accepted_hostile").glob("*.yaml"), *(ROOT / "benchmarks" / "corpus").glob("*.yaml")])
+                *(ROOT / "tests" / "accepted_hostile").glob("*.yaml"), *(ROOT / "benchmarks" / "corpus").glob("*.yaml"),
+                *(ROOT / "benchmarks" / "kane_set").glob("*.yaml")])
 # Its equations are four operations on numbers of hundreds of digits: the digits are the length.
 DIGITS = {"num_wide_rationals"}
 
