@@ -48,7 +48,7 @@ class Tape:
         self._draws = [random.Random(seed) for seed in _SEEDS]
         self._evaluated = 0
         self.labels: dict[sp.Symbol, tuple] = {}
-        self.labels_free: set[sp.Symbol] = set()  # the assigned symbols: a label may still name them
+        self._assigned: set[sp.Symbol] = set()  # the symbols written: a label may still name one
 
     def let(self, e, name: tuple | None = None) -> sp.Expr:
         """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are.
@@ -58,7 +58,7 @@ class Tape:
         """
         e = as_expr(e)
         if _trivial(e):
-            if name is not None and e in self.labels_free:
+            if name is not None and e in self._assigned:
                 # Already written (a vector turned into this frame): this is what it is, too.
                 self.labels.setdefault(e, name)
             return e
@@ -75,7 +75,7 @@ class Tape:
         label, name = name, sp.Symbol(NAME.format(len(self.assignments)), real=True)
         self.assignments.append((name, e, self.stage))
         self._memo[e] = name
-        self.labels_free.add(name)
+        self._assigned.add(name)
         if label is not None:
             self.labels[name] = label
         return name
