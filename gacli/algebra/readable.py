@@ -41,13 +41,9 @@ COLLECT_TERMS = 2_000
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
-# An equation of motion too large to walk as a tree is not printed for people
-# either: the code emitters share its subexpressions instead.
+# An equation of motion too large to walk as a tree is not written out for people
+# either: it is printed through named quantities (gacli.display.named, docs/printing.md).
 DISPLAY_NODES = LARGE_TREE
-TOO_LARGE = ("The equations of this system are too large to print for reading "
-             f"(an entry of M or F has more than {DISPLAY_NODES:,} terms as a tree). "
-             "Generate code instead, which shares their common subexpressions: "
-             "--format python or --format c.")
 
 
 @dataclass

@@ -42,21 +42,50 @@ class Coefficients:
 _LAST: list = []
 
 
-def coefficients(d: Derivation) -> Coefficients:
-    """The printed coefficients of ``d`` (memoised for the last derivation asked)."""
+def coefficients(d: Derivation, limit: int | None = None) -> Coefficients | None:
+    """The printed coefficients of ``d`` (memoised for the last derivation asked); None as soon as
+    they print in more than ``limit`` characters (M's off-diagonal entries counted twice, as the
+    equations print them), so that a long system is not tidied in full only to be named instead."""
     if _LAST and _LAST[0] is d:
-        return _LAST[1]
+        return _LAST[1] if limit is None or _LAST[2] <= limit else None
     # The nonzero entries only, each once: tidying every entry of a row made this ~k² per row.
     # One budget for all of them (readable.STEP_BUDGET_OPS operations handed to simplify), in a
     # fixed order: a large system's coefficients past it are shown as derived, and what a
     # reader gets does not depend on the machine; text and LaTeX print these same ones.
-    budgeted = Tidy()
-    mass = {(i, j): budgeted(e) for (i, j), e in sorted(d.mass_matrix.todok().items()) if j >= i and e != 0}
+    budgeted, tally = Tidy(), _Tally(limit)
+    mass = {}
+    for (i, j), e in sorted(d.mass_matrix.todok().items()):
+        if j >= i and e != 0:
+            mass[(i, j)] = tally(budgeted(e), 1 if i == j else 2)
+            if tally.over:
+                return None
     mass.update({(j, i): e for (i, j), e in list(mass.items())})
-    rest = tuple(budgeted(q - f) for q, f in zip(d.generalized_forces, d.forcing))
-    c = Coefficients(mass, rest, tuple(budgeted(q) for q in d.generalized_forces))
-    _LAST[:] = [d, c]
+    # In this order, rest then forces, as ever: the budget decides which are tidied.
+    rest, forces = [], []
+    for out, exprs in ((rest, [q - f for q, f in zip(d.generalized_forces, d.forcing)]), (forces, d.generalized_forces)):
+        for e in exprs:
+            out.append(tally(budgeted(e)))
+            if tally.over:
+                return None
+    c = Coefficients(mass, tuple(rest), tuple(forces))
+    _LAST[:] = [d, c, tally.chars]
     return c
+
+
+class _Tally:
+    """Characters printed so far, against a limit (None: no limit)."""
+
+    def __init__(self, limit: int | None) -> None:
+        self.limit, self.chars = limit, 0
+
+    @property
+    def over(self) -> bool:
+        return self.limit is not None and self.chars > self.limit
+
+    def __call__(self, e: sp.Expr, times: int = 1) -> sp.Expr:
+        if not self.over:
+            self.chars += times * len(show(e))
+        return e
 
 
 # G's diagonal halves are read again ((5 sin² θ + 2)/10, not (sin² θ + 2/5)/2) while the

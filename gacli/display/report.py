@@ -14,7 +14,8 @@ import sympy as sp
 
 from gacli.display import printed
 from gacli.mechanics.equations import Derivation
-from gacli.algebra.readable import TOO_LARGE, Tidy, displayable, show
+from gacli.algebra.readable import Tidy, displayable, show
+from gacli.display import long as L
 from gacli.algebra.symbols import rate_name
 
 
@@ -121,20 +122,43 @@ def kinematic(d: Derivation) -> Section:
                    tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",))
 
 
-def too_large() -> Section:
-    return Section("Equations", (TOO_LARGE,))
+def long_form(d: Derivation):
+    """The named form (:mod:`gacli.display.named`) when the equations written out would print
+    past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
+    None otherwise (docs/printing.md)."""
+    if not displayable(d) or not L.tidy_worth_trying(d):
+        return L.named_of(d)
+    limit = L.limit(d)
+    if printed.coefficients(d, limit) is None:
+        return L.named_of(d)
+    closed = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
+    length, longest = L.printed_length(closed), L.longest_line(closed)
+    if length <= limit and longest <= L.LONGEST_LINE:
+        return None
+    named = L.named_of(d)
+    sections = named_sections(d, named)
+    if length > limit:
+        return named if L.printed_length(sections) < length else None
+    return named if L.printed_length(sections) <= limit and L.longest_line(sections) < longest else None
+
+
+def named_sections(d: Derivation, named) -> tuple[Section, ...]:
+    return tuple(Section(title, lines) for title, lines in L.parts(d, named))
 
 
 def derivation_report(d: Derivation) -> tuple[Section, ...]:
-    """The results of the chapter's solution procedure (section 14.3)."""
-    if not displayable(d):
-        return (freedom(d), too_large())
+    """The results of the chapter's solution procedure (section 14.3); through named
+    quantities when written out they would be long (:mod:`gacli.display.long`)."""
+    named = long_form(d)
+    if named is not None:
+        return (freedom(d), *named_sections(d, named))
     return (freedom(d), rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
-    if not displayable(d):
-        return (too_large(),)
+    named = long_form(d)
+    if named is not None:
+        return (Section(GIBBS_TITLE, L.gibbs_lines(d)), *named_sections(d, named))
     return (gibbs(d),)
 
 
@@ -142,8 +166,12 @@ def steps_report(d: Derivation) -> tuple[Section, ...]:
     """The worked solution (:mod:`gacli.display.steps`) as text sections."""
     from gacli.display.steps import worked_solution
 
-    if not displayable(d):
-        return (freedom(d), too_large())
+    named = long_form(d)
+    if named is not None:
+        note = Section("Worked solution", (
+            "The steps' closed forms are too long to read written out; the equations are written "
+            "through the quantities they are built from instead (docs/printing.md).",))
+        return (freedom(d), note, *named_sections(d, named))
     return tuple(Section(step.title, tuple(_line(i) for i in step.items)) for step in worked_solution(d))
 
 

@@ -24,7 +24,7 @@ from gacli.emit.latex_text import TEXT_LINE, tex_text
 from gacli.read.textsafe import one_line
 from gacli.mechanics.equations import Derivation
 from gacli.model import System
-from gacli.algebra.readable import TOO_LARGE, displayable
+from gacli.display.report import long_form
 from gacli.version import __version__
 
 
@@ -46,9 +46,12 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     """
     system = derivation.system
     printer = printer_for(system, {"fold_func_brackets": True})
-    if not displayable(derivation):
-        # Shown in a fragment too: an \input of the file would otherwise show nothing at all.
-        sections = [Section("Equations", tex_text(TOO_LARGE), [], shown=True)]
+    named = long_form(derivation)
+    if named is not None:
+        # Long equations through the quantities they are built from, as the text report prints them.
+        from gacli.emit.latex_named import named_sections
+
+        sections = named_sections(derivation, named)
     elif steps:
         from gacli.emit.latex_steps import step_sections  # imported only when the worked solution is asked for
 

@@ -99,7 +99,7 @@ class FrameTree:
             top, axis, edges = self.group(frame)
             w = list(self.express(self.omega(top, rates), top, frame))
             w[axis] = w[axis] + sp.Add(*(self.rate(e, rates) for e in edges))
-            self._omega[key] = self.tape.vec(w)
+            self._omega[key] = self.tape.vec(w, name=("w", frame, rates.key))
         return self._omega[key]
 
     def alpha0(self, frame: str, actual: Pass) -> tuple:
@@ -112,7 +112,7 @@ class FrameTree:
             rate = sp.Add(*(self.rate(e, actual) for e in edges))
             if rate != 0:
                 a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
-            self._alpha[frame] = self.tape.vec(a)
+            self._alpha[frame] = self.tape.vec(a, name=("alpha", frame, actual.key))
         return self._alpha[frame]
 
     def nz(self, frame: str) -> tuple:

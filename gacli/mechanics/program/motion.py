@@ -63,7 +63,7 @@ class Motion:
             return self.tape.vec(scale(-1, self.contact_velocity(c, rates, zero_root=True))), c.frame
         parent = self.velocity(link.parent, rates, link.frame, zero_root)
         v = add(parent, cross(self.tree.omega(link.frame, rates), link.components), self._moving(link, rates))
-        return self.tape.vec(v), link.frame
+        return self.tape.vec(v, name=None if zero_root else ("v", point, rates.key, link.frame)), link.frame
 
     def _moving(self, link: PointLink, rates: Pass) -> tuple:
         """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q."""
@@ -94,7 +94,7 @@ class Motion:
         moving = self.tape.vec(self._moving(link, actual))
         inner = self.tape.vec(add(cross(w, p), scale(2, moving)))
         a = add(parent, cross(al, p), cross(w, inner), self._moving2(link, actual))
-        return self.tape.vec(a), link.frame
+        return self.tape.vec(a, name=None if zero_root else ("a", point, actual.key, link.frame)), link.frame
 
     def _moving2(self, link: PointLink, actual: Pass) -> tuple:
         """p̈ with all accelerations zero: Σ ∂²p/∂q∂q' q̇ q̇'."""

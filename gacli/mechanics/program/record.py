@@ -27,6 +27,9 @@ class Program:
     forcing: tuple[sp.Expr, ...]  # k entries
     stages: tuple[tuple[str, int], ...]  # (stage, number of assignments written in it), in order
     independent: tuple[str, ...] = ()  # the speeds u of M u̇ = F, in their order
+    # (symbol, label) of the assignments the tape labelled (gacli.mechanics.program.tape), in order:
+    # what the printout names them by (gacli.display.named).
+    labels: tuple[tuple[sp.Symbol, tuple], ...] = ()
 
     @property
     def k(self) -> int:
@@ -44,16 +47,17 @@ def finish(tape: Tape, rates: dict[str, sp.Expr], sums, k: int) -> Program:
     M = [[None] * k for _ in range(k)]
     for r in range(k):
         for s in range(r, k):
-            M[r][s] = M[s][r] = tape.let(sp.Add(*sums.M[r][s]))
+            M[r][s] = M[s][r] = tape.let(sp.Add(*sums.M[r][s]), name=("M", r, s))
     tape.stage = "F"
-    F = [tape.let(sp.Add(*sums.F[r])) for r in range(k)]
+    F = [tape.let(sp.Add(*sums.F[r]), name=("F", r)) for r in range(k)]
     outputs = [*rates.values(), *(x for row in M for x in row), *F]
     assignments = _needed(tape.assignments, outputs)
     stages: dict[str, int] = {}
     for _, _, stage in assignments:
         stages[stage] = stages.get(stage, 0) + 1
+    labels = tuple((name, tape.labels[name]) for name, _, _ in assignments if name in tape.labels)
     return Program(tuple((name, e) for name, e, _ in assignments), tuple(rates.items()),
-                   tuple(x for row in M for x in row), tuple(F), tuple(stages.items()))
+                   tuple(x for row in M for x in row), tuple(F), tuple(stages.items()), labels=labels)
 
 
 def _needed(assignments: list, outputs: list) -> list:

@@ -3,7 +3,10 @@
 :class:`Tape` is a builder object, not a frozen record, because value
 numbering needs one memo over the whole build: an expression already on the
 tape (or its negative) is never written twice, whichever step asks for it.
-Each assignment carries the stage it was written in (for reports). The tape
+Each assignment carries the stage it was written in (for reports), and may
+carry a *label*, a tuple saying what physical quantity it is (``("w", frame,
+pass key, component)``: a component of a frame's angular velocity along its
+own axes; see gacli.display.named), which the printout names it by. The tape
 also knows the value of every assignment at a few seeded generic points, so
 that the builder can tell an entry that vanishes identically (a row entry,
 a moment that cancels), as the loader does for its rolling rows
@@ -44,14 +47,25 @@ class Tape:
         self._points: list[dict[sp.Symbol, complex]] = [{} for _ in _SEEDS]
         self._draws = [random.Random(seed) for seed in _SEEDS]
         self._evaluated = 0
+        self.labels: dict[sp.Symbol, tuple] = {}
+        self._assigned: set[sp.Symbol] = set()  # the symbols written: a label may still name one
 
-    def let(self, e) -> sp.Expr:
-        """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are."""
+    def let(self, e, name: tuple | None = None) -> sp.Expr:
+        """A symbol for ``e`` (its own, or the one already written for e or −e); atoms stay as they are.
+
+        ``name``: the label of the quantity ``e`` is (see the module); a value already
+        written keeps the label it was first given.
+        """
         e = as_expr(e)
         if _trivial(e):
+            if name is not None and e in self._assigned:
+                # Already written (a vector turned into this frame): this is what it is, too.
+                self.labels.setdefault(e, name)
             return e
         hit = self._memo.get(e)
         if hit is not None:
+            if name is not None:
+                self.labels.setdefault(hit, name)
             return hit
         # −e of a sum is a new sum of every term negated: an eighth of a bicycle's build, and
         # no sum of the repository's systems comes back negated; a product's −e is cheap.
@@ -63,10 +77,15 @@ class Tape:
             e = scaled
             hit = self._memo.get(e)
             if hit is not None:
+                if name is not None:
+                    self.labels.setdefault(hit, name)
                 return hit
-        name = sp.Symbol(NAME.format(len(self.assignments)), real=True)
+        label, name = name, sp.Symbol(NAME.format(len(self.assignments)), real=True)
         self.assignments.append((name, e, self.stage))
         self._memo[e] = name
+        self._assigned.add(name)
+        if label is not None:
+            self.labels[name] = label
         return name
 
     def _scaled(self, e: sp.Expr) -> sp.Expr | None:
@@ -81,8 +100,9 @@ class Tape:
             c = -c if hit is not None else c
         return None if hit is None else c * hit
 
-    def vec(self, v: Iterable) -> tuple:
-        return tuple(self.let(c) for c in v)
+    def vec(self, v: Iterable, name: tuple | None = None) -> tuple:
+        """Each component let; ``name`` labels component i as ``(*name, i)``."""
+        return tuple(self.let(c, None if name is None else (*name, i)) for i, c in enumerate(v))
 
     def values(self, e: sp.Expr) -> list[complex]:
         """``e`` (over state symbols and assigned ones) at each generic point."""

@@ -219,7 +219,8 @@ def _unit(tree: FrameTree, links: dict[str, PointLink], group: dict, coordinates
     mass = sp.Add(*(b.mass for b, _ in members))
     centre = sum((b.mass * o for (b, _), o in zip(members, offsets)), sp.zeros(3, 1)) / mass
     name = "+".join(b.name for b, _ in members)
-    links[name] = PointLink(name, anchor, frame, tree.tape.vec(sp.factor_terms(x) for x in centre))
+    links[name] = PointLink(name, anchor, frame, tree.tape.vec((sp.factor_terms(x) for x in centre),
+                                                               name=("r", name, frame)))
     chosen = tuple((b, options[frame]) for b, options in members)
     wheels = tuple(w for b, pl in chosen for w in wheels_of(b, pl))
     return Unit(chosen, name, frame, mass, tuple(offsets), wheels)
@@ -245,7 +246,7 @@ def unit_inertia(tree: FrameTree, u: Unit) -> list[list[sp.Expr]]:
             for i in range(3):
                 for j in range(3):
                     total[i][j] += b.mass * ((sum(x ** 2 for x in rho) if i == j else 0) - rho[i] * rho[j])
-    return [[tape.let(x) for x in row] for row in total]
+    return [[tape.let(x, name=("I", u.point, u.frame, i, j)) for j, x in enumerate(row)] for i, row in enumerate(total)]
 
 
 def _turned(tree: FrameTree, body: BodyPlacement, pl: Placement) -> list[list[sp.Expr]]:

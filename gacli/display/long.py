@@ -1,0 +1,121 @@
+"""Which form a derivation prints in, and the named form's text (docs/printing.md).
+
+A system prints its equations written out, tidied (:mod:`gacli.display.printed`),
+while they fit in :func:`limit` characters: 25 per operation of its generated
+right-hand side after common subexpressions are shared, and never less than
+:data:`SMALL_PRINTOUT`. Past it, they are written through named quantities
+(:mod:`gacli.display.named`), which are read off the derivation's own
+record: the straight-line program generated code takes, or the shared
+subexpressions of the closed forms.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.algebra.readable import show
+from gacli.algebra.symbols import rate_name
+from gacli.display import named as N
+
+# The issue's bound: at most this many characters per operation of the generated rhs.
+CHARS_PER_OPERATION = 25
+# A printout this short is taken as within the bound whatever its operations: a handful
+# of operations still comes with the report's titles and its degrees of freedom (~500 characters).
+SMALL_PRINTOUT = 2_000
+# Written out, a line of more characters than this (a screenful) is named through its pieces instead.
+LONGEST_LINE = 2_000
+
+
+# M, F and Q of more tree nodes than this (counting stops there) are named without being tidied
+# first: tidying a 6-link spatial arm's 14,608 nodes took 9 s of its text derive only to print
+# past the bound; the systems that print written out have at most 6,001 (a robot with a castor).
+TIDIED_NODES = 10_000
+
+
+def tidy_worth_trying(d) -> bool:
+    """Whether M (r ≤ s), F and Q have at most TIDIED_NODES nodes as trees together."""
+    exprs = [e for (i, j), e in d.mass_matrix.todok().items() if j >= i]
+    count = 0
+    for e in (*exprs, *d.forcing, *d.generalized_forces):
+        for count, _ in enumerate(sp.preorder_traversal(e), start=count + 1):
+            if count > TIDIED_NODES:
+                return False
+    return True
+
+
+def limit(d) -> int:
+    """The characters the equations may print in written out (see the module)."""
+    return max(CHARS_PER_OPERATION * d.code.operations, SMALL_PRINTOUT)
+
+
+def named_of(d) -> N.Named:
+    """q̇, M and F of ``d`` through named quantities: the program's where generated code takes the
+    program, else the closed forms' shared subexpressions (never derived again)."""
+    code, taken = d.code, N.declared_names(d)
+    if code.route == "program":
+        from gacli.mechanics.code import program_for
+
+        return N.from_program(program_for(d.system), taken)
+    names = [n for n in d.rates.names if n not in d.independent]
+    dependent = {n: d.rates.rate(n) for n in names}
+    mass = [(key, e) for key, e in code.mass_matrix if key[0] <= key[1]]
+    return N.from_closed(code.kinematic_equations, mass, code.forcing, dependent, taken)
+
+
+def parts(d, named: N.Named) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """(title, lines) of the named form's sections."""
+    return (("Named quantities, each computed once, in order (docs/printing.md)", quantity_lines(named)),
+            ("Kinematic equations, eq. (14.20)", kinematic_lines(d, named)),
+            (f"Gibbs-Appell equations, eq. (14.19), as M u' = F with u = ({', '.join(d.independent)})",
+             equation_lines(d, named)))
+
+
+def quantity_lines(named: N.Named) -> tuple[str, ...]:
+    """``name = value`` in evaluation order, each vector's description once above it as ``# ...``."""
+    lines, said = [N.LEGEND] if named.source == "program" else [], None
+    for q in named.quantities:
+        if q.about and q.about != said:
+            lines.append(f"# {q.about}")
+        said = q.about
+        lines.append(f"{q.symbol.name} = {show(q.value)}")
+    return tuple(lines) or ("(none: M and F are short enough as they are)",)
+
+
+def kinematic_lines(d, named: N.Named) -> tuple[str, ...]:
+    lines = [f"{rate_name(q, 1)} = {show(e)}" for q, e in named.rates]
+    above = [q.symbol.name for q in named.quantities if q.symbol.name.startswith("dot(")]
+    if above:
+        lines.append(f"({', '.join(above)}: named above)")
+    return tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",)
+
+
+def mass_name(r: int, s: int) -> str:
+    return f"M_{r + 1}_{s + 1}"
+
+
+def equation_lines(d, named: N.Named) -> tuple[str, ...]:
+    """M's entries r ≤ s (M is symmetric), F, then each equation through them."""
+    lines = [f"{mass_name(r, s)} = {show(e)}" for (r, s), e in named.mass]
+    lines += [f"F_{r + 1} = {show(e)}" for r, e in enumerate(named.forcing)]
+    nonzero = {key for key, _ in named.mass}
+    for s, name in enumerate(d.independent):
+        terms = [f"{mass_name(min(s, r), max(s, r))}*{rate_name(u, 2)}" for r, u in enumerate(d.independent)
+                 if (min(s, r), max(s, r)) in nonzero]
+        lines.append(f"for {rate_name(name, 2)}: {' + '.join(terms) or '0'} = F_{s + 1}")
+    return tuple(lines)
+
+
+def gibbs_lines(d) -> tuple[str, ...]:
+    """G named through the equations' coefficients, as ``derive`` says it for a long G."""
+    return ("G = 1/2*sum(M[r,s]*ddot(u_r)*ddot(u_s)) + sum((Q_s - F_s)*ddot(u_s)) + ...",
+            f"  with u = {', '.join(d.independent)} and M, F as written below: dG/d(ddot(u_s)) = Q_s is "
+            "sum(M[s,r]*ddot(u_r)) = F_s (eq. 14.19)")
+
+
+def printed_length(sections) -> int:
+    """Characters of sections as ``gacli derive`` prints them (two spaces before each line)."""
+    return sum(len(s.title) + 1 + sum(len(line) + 3 for line in s.lines) for s in sections)
+
+
+def longest_line(sections) -> int:
+    return max((len(line) for s in sections for line in s.lines), default=0)
