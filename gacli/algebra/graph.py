@@ -79,18 +79,22 @@ def shared_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol
     for root in exprs:
         uses[root] = uses.get(root, 0) + 1
     rebuilt: dict[sp.Basic, sp.Basic] = {}
+    # Whether a node's rebuilt form differs from it: tested by this flag, not by identity, since
+    # equal subexpressions need not be one object (that depends on SymPy's cache, on what was
+    # built before), and a node rebuilt for nothing would be evaluated anew.
+    changed: dict[sp.Basic, bool] = {}
     replacements: list[tuple[sp.Symbol, sp.Expr]] = []
     for node in order:
         if not node.args:
-            rebuilt[node] = node
+            rebuilt[node], changed[node] = node, False
             continue
-        args = [rebuilt[a] for a in node.args]
-        new = node.func(*args) if any(n is not o for n, o in zip(args, node.args)) else node
+        moved = any(changed[a] for a in node.args)
+        new = node.func(*(rebuilt[a] for a in node.args)) if moved else node
         if uses[node] > 1 and isinstance(new, sp.Expr) and not _trivial(new):
             name = next(symbols)
             replacements.append((name, new))
-            new = name
-        rebuilt[node] = new
+            new, moved = name, True
+        rebuilt[node], changed[node] = new, moved
     reduced = [rebuilt[e] for e in exprs]
     return _live(replacements, reduced), reduced
 
@@ -119,15 +123,14 @@ def _trivial(expr: sp.Basic) -> bool:
 def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic]) -> list[sp.Basic]:
     """``xreplace`` over the graph: each distinct subexpression rebuilt once."""
     rebuilt: dict[sp.Basic, sp.Basic] = {}
+    changed: dict[sp.Basic, bool] = {}  # by flag, not identity: see shared_subexpressions
     for node in postorder(exprs):
         if node in mapping:
-            rebuilt[node] = mapping[node]
-        elif node.args:
-            args = [rebuilt[a] for a in node.args]
-            changed = any(n is not o for n, o in zip(args, node.args))
-            rebuilt[node] = node.func(*args) if changed else node
+            rebuilt[node], changed[node] = mapping[node], True
+        elif node.args and any(changed[a] for a in node.args):
+            rebuilt[node], changed[node] = node.func(*(rebuilt[a] for a in node.args)), True
         else:
-            rebuilt[node] = node
+            rebuilt[node], changed[node] = node, False
     return [rebuilt[e] for e in exprs]
 
 

@@ -96,13 +96,15 @@ def _substituted(exprs: list[sp.Expr], values: dict, evaluate: bool) -> list[sp.
     if evaluate:
         return substitute(exprs, values)
     rebuilt: dict[sp.Basic, sp.Basic] = {}
+    changed: dict[sp.Basic, bool] = {}  # by flag, not identity (gacli.algebra.graph.shared_subexpressions)
     for node in postorder(exprs):
         if node in values:
-            rebuilt[node] = values[node]
-        elif node.args and any(rebuilt[a] is not a for a in node.args):
+            rebuilt[node], changed[node] = values[node], True
+        elif node.args and any(changed[a] for a in node.args):
             args = [rebuilt[a] for a in node.args]
             plain = isinstance(node, (sp.Add, sp.Mul, sp.Pow))
             rebuilt[node] = node.func(*args, evaluate=False) if plain else node.func(*args)
+            changed[node] = True
         else:
-            rebuilt[node] = node
+            rebuilt[node], changed[node] = node, False
     return [rebuilt[e] for e in exprs]
