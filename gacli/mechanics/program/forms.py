@@ -20,6 +20,7 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
+from gacli.algebra.graph import shared_subexpressions
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
@@ -94,6 +95,19 @@ def time_derivative(system: System, actual: Pass, tape: Tape):
         if e.is_number:
             return ZERO
         (row,) = jacobian_rows([e], symbols)
-        return sp.Add(*(tape.let(d) * chain[s] for s, d in zip(symbols, row) if d != 0))
+        present = [(s, d) for s, d in zip(symbols, row) if d != 0]
+        named = shared_lets(tape, [d for _, d in present])
+        return sp.Add(*(d * chain[s] for (s, _), d in zip(present, named)))
 
     return derivative
+
+
+def shared_lets(tape: Tape, exprs: list[sp.Expr]) -> list[sp.Expr]:
+    """Each expression on the tape, its repeated subexpressions first, each once: the partial
+    derivatives of a long closed form (a rattleback's rows) repeat its denominators."""
+    fresh = (sp.Dummy() for _ in iter(int, 1))
+    replacements, reduced = shared_subexpressions(exprs, fresh)
+    names: dict[sp.Symbol, sp.Expr] = {}
+    for symbol, value in replacements:
+        names[symbol] = tape.let(value.xreplace(names))
+    return [tape.let(e.xreplace(names)) for e in reduced]
