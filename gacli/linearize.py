@@ -90,6 +90,20 @@ def linearize(derivation: Derivation, at: Mapping[str, float] | None = None,
     return Linearization(lay.state, lay.r, A, B, dict(zip(lay.state, x0)))
 
 
+def rates_at(derivation: Derivation, at: Mapping[str, float] | None = None,
+             parameters: Mapping[str, float] | None = None) -> dict[str, float]:
+    """f = (q̇, u̇) at the point, by state name (a steady motion's kept rows are zero)."""
+    from gacli.emit.naming import layout
+
+    lay = layout(derivation)
+    values = _parameter_values(lay, parameters or {})
+    point = dict(at or {})
+    _require_known(point, lay)
+    base = [float(point.get(n, 0.0)) for n in lay.state + lay.r]
+    q_dot, M0, F0 = (np.real(np.asarray(a, dtype=complex)) for a in _Equations.make(derivation, lay, values)._at(base))
+    return dict(zip(lay.state, [*q_dot, *np.linalg.solve(M0, F0)]))
+
+
 def _require_known(point: Mapping[str, float], lay) -> None:
     from gacli.simulate.spec import OptionError
 
