@@ -9,6 +9,7 @@ imports ``gacli.cli``. Nothing here imports SymPy at import time.
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
@@ -105,5 +106,89 @@ def _complex(value: complex) -> str:
     return f"{value.real:.6g}{'+' if value.imag >= 0 else '-'}{abs(value.imag):.6g}i"
 
 
+_SHARED: dict[str, Callable] = {}
+_File = Annotated[Path, typer.Argument(metavar="FILE", help="A system file (YAML).", dir_okay=False, exists=True)]
+_Format = Annotated[str, typer.Option(
+    "--format", metavar="FORMAT", callback=choice("a format", lambda: STEADY_FORMATS),
+    help="text, latex or json.")]
+_Candidate = Annotated[Optional[list[str]], typer.Option(
+    "--candidate", metavar="EXPR", help='An expression in the coordinates, rates and parameters to check for '
+    'conservation along the equations, "C*(dot(psi) + cos(theta)*dot(phi))"; may be repeated.')]
+_Timeout = Annotated[float, typer.Option(
+    "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command (0: no limit).")]
+DEFAULT_TIMEOUT = 120.0   # gacli.budget.DEFAULT_TIMEOUT, a literal so that --help does not import SymPy
+
+
 def register(app: typer.Typer, example: Callable, boundary: Callable, budget: Callable, derive: Callable) -> None:
     """Add ``steady`` and ``integrals`` to ``app``, with the shared helpers of :mod:`gacli.cli`."""
+    _SHARED.update(boundary=boundary, budget=budget, derive=derive)
+    app.command(**example("gacli steady systems/rolling_disk.yaml"))(steady)
+    app.command(**example('gacli integrals systems/routh_sphere.yaml --candidate "C*(dot(psi) + '
+                          'cos(theta)*dot(phi))"'))(integrals)
+
+
+def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
+    """Find the steady motions: families with their free values and conditions.
+
+    The coordinates the equations do not contain move at constant rates,
+    the others stand still, and the accelerations vanish (docs/steady.md).
+    """
+    from gacli.display import console
+
+    with _SHARED["boundary"](), _SHARED["budget"](file, timeout) as state:
+        derivation = _SHARED["derive"](file, state)
+        state("solving for the steady motions")
+        from gacli.steady.motions import steady_motions
+        from gacli.steady.report import motions_text
+
+        text = motions_text(steady_motions(derivation), format_)
+    console.raw(text)
+
+
+def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "text",
+              timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
+    """List the first integrals the system provably has, and check candidates.
+
+    The energy when nothing works on the system, a momentum for each
+    ignorable coordinate whose rate the constraints let it keep, and each
+    --candidate, differentiated along the equations (docs/steady.md). Exit
+    code 1 when a candidate is not conserved.
+    """
+    from gacli.display import console
+
+    with _SHARED["boundary"](), usage_errors_here(), _SHARED["budget"](file, timeout) as state:
+        derivation = _SHARED["derive"](file, state)
+        expressions = [candidate_expression(derivation, text) for text in candidate or ()]
+        state("differentiating along the equations")
+        from gacli.steady.integrals import integrals as find
+        from gacli.steady.report import integrals_text
+
+        result = find(derivation, expressions)
+        text = integrals_text(result, format_)
+    console.raw(text)
+    if any(c.conserved is False for c in result.candidates):
+        raise typer.Exit(code=1)
+
+
+def usage_errors_here():
+    from gacli.cli_options import usage_errors
+
+    return usage_errors()
+
+
+def candidate_expression(derivation, text: str):
+    """A --candidate read by gacli's own grammar (never eval): coordinates, their rates, parameters."""
+    from gacli.algebra import symbols as S
+    from gacli.read.expr.build import BuildError, Scope, build
+    from gacli.read.expr.grammar import ParseError
+    from gacli.read.expr.parser import parse
+    from gacli.simulate.spec import OptionError
+
+    system = derivation.system
+    names = [c.name for c in system.coordinates] + list(derivation.independent)
+    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]}
+    rates = {(n, 1): S.rate(n) for n in names}
+    try:
+        return build(parse(text), Scope(values=values, rates=rates))
+    except (ParseError, BuildError) as exc:
+        raise OptionError([f"--candidate {text}: {exc.message}"]) from None
