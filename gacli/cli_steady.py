@@ -158,7 +158,9 @@ def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "tex
 
     with _SHARED["boundary"](), usage_errors_here(), _SHARED["budget"](file, timeout) as state:
         derivation = _SHARED["derive"](file, state)
-        expressions = [candidate_expression(derivation, text) for text in candidate or ()]
+        from gacli.steady.integrals import parse_candidate
+
+        expressions = [parse_candidate(derivation, text) for text in candidate or ()]
         state("differentiating along the equations")
         from gacli.steady.integrals import integrals as find
         from gacli.steady.report import integrals_text
@@ -174,21 +176,3 @@ def usage_errors_here():
     from gacli.cli_options import usage_errors
 
     return usage_errors()
-
-
-def candidate_expression(derivation, text: str):
-    """A --candidate read by gacli's own grammar (never eval): coordinates, their rates, parameters."""
-    from gacli.algebra import symbols as S
-    from gacli.read.expr.build import BuildError, Scope, build
-    from gacli.read.expr.grammar import ParseError
-    from gacli.read.expr.parser import parse
-    from gacli.simulate.spec import OptionError
-
-    system = derivation.system
-    names = [c.name for c in system.coordinates] + list(derivation.independent)
-    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]}
-    rates = {(n, 1): S.rate(n) for n in names}
-    try:
-        return build(parse(text), Scope(values=values, rates=rates))
-    except (ParseError, BuildError) as exc:
-        raise OptionError([f"--candidate {text}: {exc.message}"]) from None

@@ -147,3 +147,20 @@ def _rate_inverse(derivation: Derivation) -> sp.Matrix | None:
         return beta.inv(method="LU").applyfunc(sp.simplify)
     except (ValueError, ZeroDivisionError):
         return None
+
+
+def parse_candidate(derivation: Derivation, text: str) -> sp.Expr:
+    """A candidate read by gacli's own grammar (never eval): coordinates, their rates, parameters."""
+    from gacli.read.expr.build import BuildError, Scope, build
+    from gacli.read.expr.grammar import ParseError
+    from gacli.read.expr.parser import parse
+    from gacli.simulate.spec import OptionError
+
+    system = derivation.system
+    names = [c.name for c in system.coordinates] + list(derivation.independent)
+    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]}
+    rates = {(n, 1): S.rate(n) for n in names}
+    try:
+        return build(parse(text), Scope(values=values, rates=rates))
+    except (ParseError, BuildError) as exc:
+        raise OptionError([f"--candidate {text}: {exc.message}"]) from None

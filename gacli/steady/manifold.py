@@ -55,6 +55,8 @@ def reduce_state(derivation: Derivation, parameters: Mapping[str, float]) -> Red
     speeds = tuple(str(u) for u in derivation.speeds)
     depends = np.zeros((len(names) + len(speeds), len(names)), dtype=bool)
     rng = np.random.default_rng(_SEED)
+    # Which symbols enter does not hang on the values: a parameter the file leaves open gets a generic one.
+    parameters = {**{p.name: float(rng.uniform(0.5, 1.5)) for p in derivation.system.parameters}, **parameters}
     for _ in range(_SAMPLES):
         at = {n: float(v) for n, v in zip(names + speeds, rng.uniform(-0.4, 0.4, len(names) + len(speeds)))}
         A = linearize(derivation, at, parameters).A
