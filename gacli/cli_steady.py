@@ -113,7 +113,7 @@ _Format = Annotated[str, typer.Option(
     help="text, latex or json.")]
 _Candidate = Annotated[Optional[list[str]], typer.Option(
     "--candidate", metavar="EXPR", help='An expression in the coordinates, rates and parameters to check for '
-    'conservation along the equations, "C*(dot(psi) + cos(theta)*dot(phi))"; may be repeated.')]
+    'conservation along the equations, "C*dot(q)"; may be repeated.')]
 _Timeout = Annotated[float, typer.Option(
     "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command (0: no limit).")]
 DEFAULT_TIMEOUT = 120.0   # gacli.budget.DEFAULT_TIMEOUT, a literal so that --help does not import SymPy
@@ -123,12 +123,13 @@ def register(app: typer.Typer, example: Callable, boundary: Callable, budget: Ca
     """Add ``steady`` and ``integrals`` to ``app``, with the shared helpers of :mod:`gacli.cli`."""
     _SHARED.update(boundary=boundary, budget=budget, derive=derive)
     app.command(**example("gacli steady systems/rolling_disk.yaml"))(steady)
-    app.command(**example('gacli integrals systems/routh_sphere.yaml --candidate "C*(dot(psi) + '
-                          'cos(theta)*dot(phi))"'))(integrals)
+    app.command(**example('gacli integrals systems/spinning_top.yaml --candidate "C*dot(q)"'))(integrals)
 
 
 def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
-    """Find the steady motions: families with their free values and conditions.
+    """Find the families of steady motions.
+
+    Each with its free values and the conditions it needs.
 
     The coordinates the equations do not contain move at constant rates,
     the others stand still, and the accelerations vanish (docs/steady.md).
@@ -147,7 +148,9 @@ def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_T
 
 def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "text",
               timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
-    """List the first integrals the system provably has, and check candidates.
+    """List the first integrals and check candidates.
+
+    Those the system provably has.
 
     The energy when nothing works on the system, a momentum for each
     ignorable coordinate whose rate the constraints let it keep, and each

@@ -309,7 +309,7 @@ def symbolic_point(derivation: Derivation, pairs) -> dict[str, sp.Expr]:
         try:
             tree = parse(text)
             known = dict(zip(lay.parameters, lay.parameter_symbols))
-            free = {n: sp.Symbol(n, real=True) for n in _names(tree) if n not in known}
+            free = {n: sp.Symbol(n, real=True) for n in _names(tree) if n not in known and n != "pi"}
             out[name] = build(tree, Scope(values={**known, **free}))
         except (ParseError, BuildError) as exc:
             raise LinearizeError(f"--at {name}={text}: {exc.message}") from None
