@@ -142,7 +142,7 @@ def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_T
         from gacli.steady.motions import steady_motions
         from gacli.steady.report import motions_text
 
-        text = motions_text(steady_motions(derivation), format_)
+        text = motions_text(steady_motions(derivation), format_, derivation.system)
     console.raw(text)
 
 
@@ -169,7 +169,7 @@ def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "tex
         from gacli.steady.report import integrals_text
 
         result = find(derivation, expressions)
-        text = integrals_text(result, format_)
+        text = integrals_text(result, format_, derivation.system)
     console.raw(text)
     if any(c.conserved is False for c in result.candidates):
         raise typer.Exit(code=1)

@@ -71,3 +71,16 @@ def test_steady_command_formats():
         {"values": {"dot(theta)": "0"}, "free": ["dot(s)"], "relations": [], "conditions_nonzero": []}]
     bad = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "html"])
     assert bad.exit_code == 2
+
+
+def test_a_system_too_large_for_symbolic_work_is_refused_plainly():
+    result = CliRunner().invoke(app, ["steady", str(SYSTEMS / "whipple_bicycle.yaml")])
+    assert result.exit_code == 1 and "too large for symbolic work" in result.output
+    assert "Traceback" not in result.output
+
+
+def test_latex_format_is_amsmath():
+    result = CliRunner().invoke(app, ["steady", str(SYSTEMS / "rolling_disk.yaml"), "--format", "latex"])
+    assert result.exit_code == 0, result.output
+    assert result.output.count("\\begin{align*}") == result.output.count("\\end{align*}") == 3
+    assert "\\dot{\\varphi} &= " in result.output    # the file's latex: for spin

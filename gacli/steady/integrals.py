@@ -59,7 +59,9 @@ class Integrals:
 def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = ()) -> Integrals:
     """The energy and the momenta that hold, the statements where they do not, and the candidates."""
     from gacli.simulate.energy import conservation_problems, energy_expressions
+    from gacli.steady import require_small
 
+    require_small(derivation, "integrals")
     found, broken = [], []
     problems = conservation_problems(derivation)
     if problems:

@@ -49,8 +49,10 @@ class SteadyMotions:
 def steady_motions(derivation: Derivation) -> SteadyMotions:
     """The families of steady motions of the system (see the module's text)."""
     from gacli.emit.naming import parameter_defaults
+    from gacli.steady import require_small
     from gacli.steady.manifold import reduce_state
 
+    require_small(derivation, "steady")
     reduction = reduce_state(derivation, parameter_defaults(derivation.system.parameters))
     kinematic = dict(derivation.kinematic_equations)
     no_inputs = {S.value(i.name): sp.S.Zero for i in derivation.system.inputs}

@@ -94,8 +94,9 @@ def stability_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None 
     """The reduced A and its characteristic polynomial at a point of expressions (others 0), and
     conditions on the parameters (and on the point's own symbols) for stability."""
     from gacli.emit.naming import parameter_defaults
-    from gacli.steady import hurwitz, symbolic
+    from gacli.steady import hurwitz, require_small, symbolic
 
+    require_small(derivation, "symbolic stability")
     defaults = parameter_defaults(derivation.system.parameters)
     reduction = reduce_state(derivation, defaults)
     point = _symbolic_point(derivation, at or {})
