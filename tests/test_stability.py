@@ -113,3 +113,20 @@ def test_disk_sweep_finds_the_threshold():
     threshold = np.sqrt(9.81 / (3 * 0.3))
     found = re.search(r"stable for dot\(spin\) in \[([-0-9.e]+), ([-0-9.e]+)\]", result.output)
     assert found and float(found.group(1)) == pytest.approx(threshold, abs=1e-8) and float(found.group(2)) == 8
+
+
+def test_sweep_over_a_parameter():
+    """At spin ω the disk stands while g < 3 r ω² (the same threshold read the other way): 22.5 at ω = 5."""
+    from gacli.steady.sweep import sweep
+
+    result = sweep(derived("rolling_disk"), "g", 1.0, 40.0, at={"dot(spin)": 5.0}, points=9)
+    assert len(result.intervals) == 1
+    low, high = result.intervals[0]
+    assert low == 1.0 and high == pytest.approx(3 * 0.3 * 25, abs=1e-8)
+
+
+def test_bicycle_pitch_is_held_not_a_state():
+    """The front wheel's contact fixes the pitch: it is no direction of its own (docs/steady.md)."""
+    result = stability(derived("whipple_bicycle"), {"dot(wheel_R)": 5.0 / 0.3})
+    assert result.reduction.held == ("pitch",)
+    assert result.reduction.coordinates == ("roll", "steer") and result.stable

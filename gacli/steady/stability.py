@@ -39,7 +39,9 @@ class Stability:
     zero_roots: int = 0
     stable: bool | None = None                  # numeric verdict; None when symbolic
     polynomial: sp.Expr | None = None           # symbolic: det(λI − A)
-    test: str | None = None                     # "even" or "hurwitz", None when no closed test applied
+    # "even" or "hurwitz"; None when no closed test applied: then the eigenvalues with the file's
+    # values decide (symbolic), if the point has no symbol of its own, and conditions is empty.
+    test: str | None = None
     conditions: tuple[sp.Expr, ...] = field(default=())   # each > 0, together: stable
 
     @property
@@ -110,9 +112,15 @@ def stability_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None 
     zero = hurwitz.zero_roots(coefficients)
     found = hurwitz.conditions(coefficients[zero:], _signs(derivation, defaults))
     shown = {name: point[_symbol(name)] for name in reduction.state}
-    test, conditions = found if found else (None, [])
-    return Stability(reduction, A, shown, steady, zero_roots=zero, polynomial=sp.factor(polynomial),
-                     test=test, conditions=tuple(conditions))
+    if found:
+        return Stability(reduction, A, shown, steady, zero_roots=zero, polynomial=sp.factor(polynomial),
+                         test=found[0], conditions=tuple(found[1]))
+    # No closed test: the numbers decide, with the file's values, where the point has no symbol of its own.
+    numbers = A.xreplace({S.value(n): sp.Float(v) for n, v in defaults.items()})
+    eigenvalues, stable = None, None
+    if not numbers.free_symbols:
+        eigenvalues, zero, stable = verdict(np.array(numbers.evalf().tolist(), dtype=float))
+    return Stability(reduction, A, shown, steady, eigenvalues, zero, stable, polynomial=sp.factor(polynomial))
 
 
 def _symbol(name: str) -> sp.Symbol:
