@@ -96,6 +96,9 @@ def sweep_lines(derivation, text: str, pairs, overrides, names) -> list[str]:
     for v, ok, row in zip(result.values, result.stable, result.eigenvalues):
         lines.append(f"{v:>14.8g}  {'yes' if ok else 'no':>6}  " + "  ".join(_complex(e) for e in row))
     lines.append("")
+    if not result.steady:
+        lines.append("note: the point is not a steady motion at both ends (the rates of the kept coordinates or "
+                     "the accelerations are not zero there); complete it with --at")
     lines += [f"critical {name} = {c:.10g}" for c in result.critical]
     lines += [f"stable for {name} in [{a:.10g}, {b:.10g}]" for a, b in result.intervals] or \
         [f"stable nowhere in [{start:g}, {stop:g}]"]

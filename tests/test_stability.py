@@ -130,3 +130,12 @@ def test_bicycle_pitch_is_held_not_a_state():
     result = stability(derived("whipple_bicycle"), {"dot(wheel_R)": 5.0 / 0.3})
     assert result.reduction.held == ("pitch",)
     assert result.reduction.coordinates == ("roll", "steer") and result.stable
+
+
+def test_sweep_says_when_the_point_is_no_steady_motion():
+    # Leaning at 0.2 rad without turning, the disk falls: the eigenvalues describe no steady motion.
+    result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "rolling_disk.yaml"),
+                                      "--sweep", "dot(spin)=1:5:3", "--at", "lean=0.2"])
+    assert result.exit_code == 0 and "not a steady motion" in result.output
+    fine = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "rolling_disk.yaml"), "--sweep", "dot(spin)=1:5:3"])
+    assert "not a steady motion" not in fine.output

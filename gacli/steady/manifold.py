@@ -49,8 +49,9 @@ class Reduction:
 
 def reduce_state(derivation: Derivation, parameters: Mapping[str, float]) -> Reduction:
     """Which coordinates a perturbation of a steady motion may move (see the module's text)."""
-    from gacli.linearize import linearize
+    from gacli.linearize import linearizer
 
+    linearize = linearizer(derivation)
     names = tuple(c.name for c in derivation.system.coordinates)
     speeds = tuple(str(u) for u in derivation.speeds)
     depends = np.zeros((len(names) + len(speeds), len(names)), dtype=bool)
@@ -59,7 +60,7 @@ def reduce_state(derivation: Derivation, parameters: Mapping[str, float]) -> Red
     parameters = {**{p.name: float(rng.uniform(0.5, 1.5)) for p in derivation.system.parameters}, **parameters}
     for _ in range(_SAMPLES):
         at = {n: float(v) for n, v in zip(names + speeds, rng.uniform(-0.4, 0.4, len(names) + len(speeds)))}
-        A = linearize(derivation, at, parameters).A
+        A = linearize(at, parameters).A
         scale = max(1.0, float(np.abs(A).max()))
         depends |= np.abs(A[:, :len(names)]) > _ZERO * scale
     ignorable = _ignorable(names, depends)

@@ -60,7 +60,7 @@ def stability(derivation: Derivation, at: Mapping[str, float] | None = None,
     lin = linearize(derivation, at, values)
     A = np.array(restricted(lin.A, lin.state, reduction), dtype=float).reshape(len(reduction.state), -1)
     f = rates_at(derivation, at, values)
-    steady = _steady_numeric(f, reduction)
+    steady = steady_numeric(f, reduction)
     eigenvalues, zero, stable = verdict(A)
     return Stability(reduction, A, dict(lin.point), steady, eigenvalues, zero, stable)
 
@@ -87,7 +87,8 @@ def growth(A: np.ndarray, zero: int) -> float:
     return float(rest.real.max()) if rest.size else 0.0
 
 
-def _steady_numeric(f: Mapping[str, float], reduction: Reduction) -> bool:
+def steady_numeric(f: Mapping[str, float], reduction: Reduction) -> bool:
+    """Whether the kept rows of f = (q̇, u̇) vanish at the point: a steady motion."""
     rows = [f[c] for c in reduction.coordinates] + [f[u] for u in reduction.speeds]
     return bool(np.all(np.abs(rows) <= 1e-9 * max(1.0, float(np.abs(list(f.values())).max()))))
 

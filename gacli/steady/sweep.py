@@ -40,6 +40,7 @@ class Sweep:
     stable: tuple[bool, ...]
     critical: tuple[float, ...]      # where the verdict changes, refined
     intervals: tuple[tuple[float, float], ...]
+    steady: bool = True              # the ends of the sweep are steady motions (the kept rows of f vanish)
 
 
 def sweep(derivation: Derivation, name: str, start: float, stop: float, *, at: Mapping[str, float] | None = None,
@@ -57,7 +58,7 @@ def sweep(derivation: Derivation, name: str, start: float, stop: float, *, at: M
     critical = tuple(_refine(matrix, zero, values[i], values[i + 1])
                      for i in range(len(values) - 1) if stable[i] != stable[i + 1])
     return Sweep(name, values, state, eigenvalues, zero, stable, critical,
-                 _intervals(values, stable, critical))
+                 _intervals(values, stable, critical), all(matrix.steady(v) for v in (values[0], values[-1])))
 
 
 class _Matrix:
@@ -68,6 +69,7 @@ class _Matrix:
         from gacli.sweep.work import resolved_parameters
 
         self._lin, self._name, self._at, self._given = linearizer(derivation), name, at, parameters
+        self._derivation = derivation
         self._resolve = lambda given: resolved_parameters(derivation.system, given)
         self._is_parameter = name in {p.name for p in derivation.system.parameters}
         base = self._resolve(parameters)
@@ -81,11 +83,22 @@ class _Matrix:
         self._indices = state_indices(states, probe.state) if states else None
         self.state = tuple(states) if states else self._reduction.state
 
-    def __call__(self, value: float) -> np.ndarray:
+    def _point(self, value: float) -> tuple[dict, dict]:
         if self._is_parameter:
-            lin = self._lin(self._at, self._resolve({**self._given, self._name: float(value)}))
-        else:
-            lin = self._lin({**self._at, self._name: float(value)}, self._resolve(self._given))
+            return self._at, self._resolve({**self._given, self._name: float(value)})
+        return {**self._at, self._name: float(value)}, self._resolve(self._given)
+
+    def steady(self, value: float) -> bool:
+        """Whether the point is a steady motion (always True for a block of --states: not judged)."""
+        from gacli.linearize import rates_at
+        from gacli.steady.stability import steady_numeric
+
+        if self._reduction is None:
+            return True
+        return steady_numeric(rates_at(self._derivation, *self._point(value)), self._reduction)
+
+    def __call__(self, value: float) -> np.ndarray:
+        lin = self._lin(*self._point(value))
         if self._indices is not None:
             return lin.A[np.ix_(self._indices, self._indices)]
         return np.array(restricted(lin.A, lin.state, self._reduction), dtype=float).reshape(len(self.state), -1)
