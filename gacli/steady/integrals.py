@@ -35,6 +35,7 @@ from gacli.mechanics.equations import Derivation
 
 # Beyond this many operations the expansion costs more than the seeded points' verdict is worth.
 _EXPAND_MAX_OPS = 1500
+_EXPAND_SECONDS = 1.5
 
 
 @dataclass(frozen=True)
@@ -56,27 +57,45 @@ class Integrals:
     candidates: tuple[Integral, ...]
 
 
-def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = ()) -> Integrals:
-    """The energy and the momenta that hold, the statements where they do not, and the candidates."""
+def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = (), search: bool = True) -> Integrals:
+    """The energy and the momenta that hold, the statements where they do not, and the candidates
+    (only the candidates with ``search=False``)."""
     from gacli.simulate.energy import conservation_problems, energy_expressions
     from gacli.steady import require_small
 
     require_small(derivation, "integrals")
     found, broken = [], []
+    checked = tuple(Integral(f"candidate {i + 1}", *_checked(derivation, c, tidy=False)) for i, c in enumerate(candidates))
+    if not search:
+        return Integrals((), (), checked)
     problems = conservation_problems(derivation)
-    if problems:
-        broken.append(("energy", "work is done on the system: " + "; ".join(problems)))
-    else:
-        T, V = energy_expressions(derivation)
+    T, V = energy_expressions(derivation)
+    if not problems:
         _sort(Integral("energy T + V", *_checked(derivation, T + V)), found, broken)
+    elif problems == [_MOVING_SUPPORT]:
+        broken.append(("energy", "work is done on the system: " + problems[0]))
+        _sort(Integral("Jacobi's integral T2 - T0 + V", *_checked(derivation, _jacobi(derivation, T, V))),
+              found, broken, "the support's motion is not steady: its rate along the equations is not zero")
+    else:
+        broken.append(("energy", "work is done on the system: " + "; ".join(problems)))
     for name, momentum, why in _momenta(derivation):
         if momentum is None:
             broken.append((f"momentum of {name}", why))
         else:
             _sort(Integral(f"momentum of {name}", *_checked(derivation, momentum)), found, broken,
                   "the constraints break it: its rate along the equations is not zero")
-    checked = tuple(Integral(f"candidate {i + 1}", *_checked(derivation, c, tidy=False)) for i, c in enumerate(candidates))
     return Integrals(tuple(found), tuple(broken), checked)
+
+
+# gacli.simulate.energy's reason when the only work is a moving support's: then Jacobi's integral.
+_MOVING_SUPPORT = "velocities with terms free of the independent rates (a moving support)"
+
+
+def _jacobi(derivation: Derivation, T: sp.Expr, V: sp.Expr) -> sp.Expr:
+    """T₂ − T₀ + V, with T = T₂ + T₁ + T₀ split by degree in the independent rates."""
+    scale = sp.Dummy("scale")
+    parts = sp.Poly(sp.expand(T.xreplace({u: scale * u for u in derivation.speeds})), scale)
+    return parts.coeff_monomial(scale**2) - parts.coeff_monomial(1) + V
 
 
 def _sort(integral: Integral, found: list, broken: list, why: str = "its rate along the equations is not zero"):
@@ -89,7 +108,7 @@ def _sort(integral: Integral, found: list, broken: list, why: str = "its rate al
 def _checked(derivation: Derivation, G: sp.Expr, tidy: bool = True) -> tuple[sp.Expr, bool | None, str]:
     from gacli.numeric.zero import decide_zero
 
-    G = sp.factor(sp.trigsimp(G)) if tidy and sp.count_ops(G) < 400 else G
+    G = _readable(G) if tidy else G
     rate = rate_along(derivation, G)
     if _expands_to_zero(rate):
         return G, True, "symbolic"
@@ -99,12 +118,35 @@ def _checked(derivation: Derivation, G: sp.Expr, tidy: bool = True) -> tuple[sp.
 
 def _expands_to_zero(expr: sp.Expr) -> bool:
     """Zero after expansion with cos² = 1 − sin² for every angle: a proof, tried where it is cheap."""
+    from gacli.numeric.zero import time_limit
+
     if sp.count_ops(expr) > _EXPAND_MAX_OPS:
         return False
-    expanded = sp.expand(expr)
-    angles = {c.args[0] for c in expanded.atoms(sp.cos)}
-    squares = {sp.cos(a)**2: 1 - sp.sin(a)**2 for a in angles}
-    return sp.expand(expanded.subs(squares)) == 0 if expanded != 0 else True
+    try:
+        with time_limit(_EXPAND_SECONDS, _TooSlow):
+            expanded = sp.expand(expr)
+            angles = {c.args[0] for c in expanded.atoms(sp.cos)}
+            squares = {sp.cos(a)**2: 1 - sp.sin(a)**2 for a in angles}
+            return expanded == 0 or sp.expand(expanded.subs(squares)) == 0
+    except _TooSlow:
+        return False     # the seeded points decide instead, and say so
+
+
+class _TooSlow(Exception):
+    pass
+
+
+def _readable(G: sp.Expr) -> sp.Expr:
+    """G with sin² + cos² folded for the reader, when SymPy does it quickly; else as formed."""
+    from gacli.numeric.zero import time_limit
+
+    if sp.count_ops(G) >= 400:
+        return G
+    try:
+        with time_limit(_EXPAND_SECONDS, _TooSlow):
+            return sp.factor(sp.trigsimp(G))
+    except _TooSlow:
+        return G
 
 
 def rate_along(derivation: Derivation, G: sp.Expr) -> sp.Expr:
@@ -115,6 +157,7 @@ def rate_along(derivation: Derivation, G: sp.Expr) -> sp.Expr:
     M, F = sp.Matrix(derivation.mass_matrix), sp.Matrix(derivation.forcing)
     along_q = sum((sp.diff(G, q) * e for q, e in kinematic.items()), sp.S.Zero)
     grad_u = sp.Matrix([[sp.diff(G, u) for u in speeds]])
+    along_q += sp.diff(G, S.T)     # an integral may hold t (Jacobi's, with a support turning steadily)
     return M.det(method="berkowitz") * along_q + (grad_u * M.adjugate(method="berkowitz") * F)[0, 0]
 
 
