@@ -28,8 +28,10 @@ __all__ = [
     "__version__",
     "derive",
     "emit",
+    "integrals",
     "load",
     "loads",
+    "stability",
 ]
 
 _LAZY = {
@@ -39,6 +41,8 @@ _LAZY = {
     "load": "gacli.loader.loading",
     "loads": "gacli.loader.loading",
     "emit": "gacli.api",
+    "stability": "gacli.api",
+    "integrals": "gacli.api",
     "DerivationError": "gacli.errors",
     "Diagnostic": "gacli.errors",
     "EmitError": "gacli.errors",
@@ -48,7 +52,7 @@ _LAZY = {
 }
 
 if TYPE_CHECKING:  # pragma: no cover
-    from gacli.api import Derivation, derive, emit
+    from gacli.api import Derivation, derive, emit, integrals, stability
     from gacli.errors import (
         DerivationError,
         Diagnostic,
@@ -82,8 +86,8 @@ def __dir__() -> list[str]:
 import sys as _sys
 import types as _types
 
-_CALLABLE_MODULES = ("linearize", "simulate")
-__all__ = sorted([*__all__, "linearize", "simulate"])
+_CALLABLE_MODULES = ("linearize", "simulate", "steady")
+__all__ = sorted([*__all__, "linearize", "simulate", "steady"])
 
 
 class _CallableModule(_types.ModuleType):

@@ -76,3 +76,45 @@ def simulate(system, *, parameters=None, initial=None, inputs=None, functions=No
                           functions=text(functions), t_end=float(t_end), method=method, rtol=float(rtol),
                           atol=float(atol), points=int(points))
     return run(_derivation(system), spec)
+
+
+# -- steady motions, their stability, first integrals (gacli.steady; docs/steady.md) ---------
+
+def steady(system):
+    """The families of steady motions, as ``gacli steady`` finds them (:class:`gacli.steady.motions.SteadyMotions`).
+
+    >>> import gacli
+    >>> gacli.steady("systems/rolling_disk.yaml").families  # doctest: +SKIP
+    """
+    from gacli.steady.motions import steady_motions
+
+    return steady_motions(_derivation(system))
+
+
+def stability(system, at=None, parameters=None, symbolic=False):
+    """Linear stability of the motion ``at`` on the constraint manifold (:class:`gacli.steady.stability.Stability`).
+
+    Numerically: ``.eigenvalues``, ``.stable``. With ``symbolic=True``, ``at`` may hold SymPy
+    expressions (a free spin rate), and ``.conditions`` are expressions that must all be positive.
+
+    >>> import gacli, sympy
+    >>> gacli.stability("systems/rolling_disk.yaml", {"dot(spin)": sympy.Symbol("w")}, symbolic=True).conditions  # doctest: +SKIP
+    """
+    from gacli.steady.stability import stability as numeric, stability_symbolic
+    from gacli.sweep.work import resolved_parameters
+
+    derivation = _derivation(system)
+    if symbolic:
+        return stability_symbolic(derivation, dict(at or {}))
+    return numeric(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))
+
+
+def integrals(system, candidates=()):
+    """The first integrals found and the candidates checked (:class:`gacli.steady.integrals.Integrals`).
+
+    ``candidates``: SymPy expressions, or text in gacli's grammar ("C*dot(q)").
+    """
+    from gacli.steady.integrals import integrals as find, parse_candidate
+
+    derivation = _derivation(system)
+    return find(derivation, [c if not isinstance(c, str) else parse_candidate(derivation, c) for c in candidates])

@@ -16,6 +16,7 @@ import typer
 
 from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, plain_report, show_version
 from gacli.cli_options import usage_errors
+from gacli.cli_steady import SweepOption, register as register_steady
 from gacli.cli_sweep import register as register_sweep
 
 app = typer.Typer(
@@ -321,17 +322,22 @@ def linearize(
         "--set", metavar="NAME=VALUE,...", help='Parameter values over the file\'s, "g=9.81".')] = None,
     states: Annotated[Optional[str], typer.Option(
         metavar="STATE,...", help='Keep these states (rows and columns of A), "lean,dot(yaw),dot(lean)".')] = None,
-    symbolic: Annotated[bool, typer.Option(help="A and B as expressions (small systems).")] = False,
+    symbolic: Annotated[bool, typer.Option(
+        help='A and B as expressions (small systems); --at may name new symbols, "dot(spin)=w".')] = False,
+    sweep: SweepOption = None,
     timeout: Timeout = DEFAULT_TIMEOUT,
 ) -> None:
     """Linearize about an operating point.
 
     Prints A, B and the eigenvalues of A, numerically (or A and B
     symbolically, with --symbolic, at an --at of expressions in the parameters).
+    With --sweep, the eigenvalues on the constraint manifold along a value,
+    the intervals where they are stable and the critical values (docs/steady.md).
     """
     from gacli.display import console
     from gacli import linearize as L
-    from gacli.cli_options import numeric_lines, symbolic_lines
+    from gacli.cli_options import numeric_lines
+    from gacli.cli_steady import sweep_lines, sweep_usage, symbolic_lines
     from gacli.simulate.console import notes_from_warnings
     from gacli.simulate.spec import parse_assignments, state_names
 
@@ -339,14 +345,14 @@ def linearize(
         pairs = parse_assignments(at or "", "--at")
         overrides = parse_assignments(set_ or "", "--set")
         names = state_names(states or "", "--states")
-        if symbolic and overrides:
-            raise typer.BadParameter("--symbolic keeps the parameters as symbols; leave out --set",
-                                     param_hint="--set")
+        sweep_usage(sweep, symbolic)
         with _budget(file, timeout) as state, notes_from_warnings():
             derivation = _derive(file, state)
             state("linearizing")
             if symbolic:
-                lines = symbolic_lines(L, derivation, pairs, names)
+                lines = symbolic_lines(derivation, pairs, overrides, names)
+            elif sweep:
+                lines = sweep_lines(derivation, sweep, pairs, overrides, names)
             else:
                 lines = numeric_lines(L, derivation, pairs, overrides, names)
         console.raw("\n".join(lines))
@@ -381,6 +387,7 @@ def verify(
 
 
 register_sweep(app, example, _boundary, _budget, _derive)
+register_steady(app, example, _boundary, _budget, _derive)
 
 
 def main() -> None:

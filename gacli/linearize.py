@@ -71,23 +71,48 @@ def linearize(derivation: Derivation, at: Mapping[str, float] | None = None,
         SystemFileError: the equations cannot be evaluated at the point, located at the
             file (or the load) whose expressions fail there.
     """
+    return linearizer(derivation)(at, parameters)
+
+
+def linearizer(derivation: Derivation):
+    """``linearize`` for one derivation at many points: the equations compiled once (a sweep)."""
+    from gacli.emit.naming import layout
+
+    lay = layout(derivation)
+    compiled = _Equations.make(derivation, lay, {})
+
+    def at_point(at: Mapping[str, float] | None = None,
+                 parameters: Mapping[str, float] | None = None) -> Linearization:
+        values = _parameter_values(lay, parameters or {})
+        point = dict(at or {})
+        _require_known(point, lay)
+        x0 = [float(point.get(n, 0.0)) for n in lay.state]
+        r0 = [float(point.get(n, 0.0)) for n in lay.r]
+        equations = compiled.with_values(lay, values)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", RuntimeWarning)  # numpy's overflow or 0/0 is a failure here
+                A = equations.jacobian(x0, r0, wrt="x")
+                B = equations.jacobian(x0, r0, wrt="r")
+        except (ArithmeticError, ValueError, TypeError, RuntimeWarning, np.linalg.LinAlgError) as exc:
+            raise _unevaluable(derivation, dict(zip(lay.state + lay.r, x0 + r0)), exc) from None
+        return Linearization(lay.state, lay.r, A, B, dict(zip(lay.state, x0)))
+
+    return at_point
+
+
+def rates_at(derivation: Derivation, at: Mapping[str, float] | None = None,
+             parameters: Mapping[str, float] | None = None) -> dict[str, float]:
+    """f = (q̇, u̇) at the point, by state name (a steady motion's kept rows are zero)."""
     from gacli.emit.naming import layout
 
     lay = layout(derivation)
     values = _parameter_values(lay, parameters or {})
     point = dict(at or {})
     _require_known(point, lay)
-    x0 = [float(point.get(n, 0.0)) for n in lay.state]
-    r0 = [float(point.get(n, 0.0)) for n in lay.r]
-    equations = _Equations.make(derivation, lay, values)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", RuntimeWarning)  # numpy's overflow or 0/0 is a failure here, not a note
-            A = equations.jacobian(x0, r0, wrt="x")
-            B = equations.jacobian(x0, r0, wrt="r")
-    except (ArithmeticError, ValueError, TypeError, RuntimeWarning, np.linalg.LinAlgError) as exc:
-        raise _unevaluable(derivation, dict(zip(lay.state + lay.r, x0 + r0)), exc) from None
-    return Linearization(lay.state, lay.r, A, B, dict(zip(lay.state, x0)))
+    base = [float(point.get(n, 0.0)) for n in lay.state + lay.r]
+    q_dot, M0, F0 = (np.real(np.asarray(a, dtype=complex)) for a in _Equations.make(derivation, lay, values)._at(base))
+    return dict(zip(lay.state, [*q_dot, *np.linalg.solve(M0, F0)]))
 
 
 def _require_known(point: Mapping[str, float], lay) -> None:
@@ -169,13 +194,19 @@ class _Equations:
 
         kin = [e for _, e in derivation.kinematic_equations]
         exprs = kin + list(derivation.mass_matrix) + list(derivation.forcing)
-        fixed = {sym: values[sym.name] for sym in lay.parameter_symbols}
+        fixed = {sym: values[sym.name] for sym in lay.parameter_symbols if sym.name in values}
         fixed[sp.Symbol("t", real=True)] = 0.0
         arguments = tuple(lay.state_symbols) + tuple(lay.r_symbols)
         try:
             return _Equations(Program(exprs), arguments, fixed, len(kin), derivation.k, True)
         except TypeError:
             return _Equations(Program(exprs, MPMATH), arguments, fixed, len(kin), derivation.k, False)
+
+    def with_values(self, lay, values: Mapping[str, float]) -> "_Equations":
+        from dataclasses import replace
+
+        fixed = {sym: values[sym.name] for sym in lay.parameter_symbols}
+        return replace(self, fixed={**fixed, sp.Symbol("t", real=True): 0.0})
 
     def __call__(self, point) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         numbers = self.program({**self.fixed, **dict(zip(self.arguments, point))})
@@ -261,7 +292,11 @@ def state_indices(names: Sequence[str], state: Sequence[str]) -> list[int]:
 
 
 def symbolic_point(derivation: Derivation, pairs) -> dict[str, sp.Expr]:
-    """An operating point of expressions in numbers and the parameters, kept as symbols (--symbolic --at)."""
+    """An operating point of expressions in numbers and the parameters, kept as symbols (--symbolic --at).
+
+    A name that is no parameter stands for itself, a new real symbol: "dot(spin)=omega" keeps the
+    spin rate free, so that A, and the conditions read from it, are functions of it.
+    """
     from gacli.emit.naming import layout
     from gacli.read.expr.build import BuildError, Scope, build
     from gacli.read.expr.grammar import ParseError
@@ -269,13 +304,32 @@ def symbolic_point(derivation: Derivation, pairs) -> dict[str, sp.Expr]:
 
     lay = layout(derivation)
     _require_known(dict(pairs), lay)
-    scope = Scope(values=dict(zip(lay.parameters, lay.parameter_symbols)))
     out = {}
     for name, text in pairs:
         try:
-            out[name] = build(parse(text), scope)
+            tree = parse(text)
+            known = dict(zip(lay.parameters, lay.parameter_symbols))
+            free = {n: sp.Symbol(n, real=True) for n in _names(tree) if n not in known and n != "pi"}
+            out[name] = build(tree, Scope(values={**known, **free}))
         except (ParseError, BuildError) as exc:
             raise LinearizeError(f"--at {name}={text}: {exc.message}") from None
+    return out
+
+
+def _names(node) -> set[str]:
+    """The plain names in a parsed expression (the grammar's nodes are dataclasses)."""
+    import dataclasses
+
+    from gacli.read.expr.grammar import Name
+
+    if isinstance(node, Name):
+        return {node.id}
+    out: set[str] = set()
+    if dataclasses.is_dataclass(node):
+        for f in dataclasses.fields(node):
+            value = getattr(node, f.name)
+            for child in value if isinstance(value, tuple) else (value,):
+                out |= _names(child)
     return out
 
 
@@ -304,7 +358,11 @@ def evaluate_assignments(pairs, parameters: Mapping[str, float], option: str) ->
 
 def format_matrix(matrix: np.ndarray, rows: Sequence[str], columns: Sequence[str]) -> list[str]:
     """A labelled matrix as aligned text lines, %.10g entries."""
-    cells = [[f"{v:.10g}" for v in row] for row in matrix]
+    return format_cells([[f"{v:.10g}" for v in row] for row in matrix], rows, columns)
+
+
+def format_cells(cells: Sequence[Sequence[str]], rows: Sequence[str], columns: Sequence[str]) -> list[str]:
+    """A labelled table of text cells as aligned lines (a symbolic A's entries too)."""
     width = max([len(c) for row in cells for c in row] + [len(c) for c in columns] + [1])
     label = max([len(r) for r in rows] + [1])
     lines = [" " * label + "  " + " ".join(c.rjust(width) for c in columns)]

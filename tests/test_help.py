@@ -32,7 +32,8 @@ def example(*command: str) -> str:
 
 
 def test_the_commands_are_all_there():
-    assert COMMANDS == ["derive", "gibbs", "check", "schema", "simulate", "linearize", "verify", "sweep"]
+    assert COMMANDS == ["derive", "gibbs", "check", "schema", "simulate", "linearize", "verify", "sweep", "steady",
+                        "integrals"]
 
 
 def test_each_summary_is_a_whole_sentence():

@@ -48,6 +48,13 @@ class Simulation:
     kinetic_energy: np.ndarray | None = None
     not_conservative: tuple[str, ...] = ()
     residuals: dict[str, ConstraintResidual] = field(default_factory=dict)
+    # Each first integral besides E (gacli.steady.integrals) along the path, by name.
+    integrals: dict[str, np.ndarray] = field(default_factory=dict)
+
+    def integral_drift(self, name: str) -> float:
+        """max |I(t) − I(t₀)| of a first integral along the path."""
+        values = self.integrals[name]
+        return float(np.max(np.abs(values - values[0])))
 
     def column(self, name: str) -> np.ndarray:
         return self.states[:, self.state_names.index(name)]
@@ -95,6 +102,8 @@ def summary_lines(sim: Simulation) -> list[str]:
     else:
         lines.append(f"energy: E(0) = {short(sim.energy[0])}, max |E - E(0)| = {short(sim.energy_drift)} "
                      f"(relative {short(sim.energy_relative_drift)})")
+    for name, values in sim.integrals.items():
+        lines.append(f"{name}: I(0) = {short(values[0])}, max |I - I(0)| = {short(sim.integral_drift(name))}")
     for r in sim.residuals.values():
         if r.finite:
             lines.append(f"{r.label} {r.text}: f(0) = {short(r.initial)}, max |f - f(0)| = {short(r.max_abs)}")

@@ -57,7 +57,30 @@ def simulate(derivation: Derivation, spec: SimulationSpec,
         method=spec.method, rtol=spec.rtol, atol=spec.atol, evaluations=int(solution.nfev),
         energy=energy, kinetic_energy=kinetic, not_conservative=tuple(conservative),
         residuals=problem.residuals(t, states, solution.sol),
+        integrals={name: problem._vectorized(expr)(t, states) for name, expr in integrals_of(derivation)},
     )
+
+
+_FOUND: dict[int, tuple[Derivation, tuple]] = {}
+
+
+def integrals_of(derivation: Derivation) -> tuple[tuple[str, sp.Expr], ...]:
+    """The first integrals besides the energy (gacli.steady.integrals), once per derivation (a sweep
+    simulates one derivation many times); none searched for a system too large to print."""
+    from gacli.algebra.readable import displayable
+    from gacli.steady.integrals import integrals
+
+    held = _FOUND.get(id(derivation))
+    if held is not None and held[0] is derivation:
+        return held[1]
+    if not displayable(derivation) or derivation.system.free_functions:
+        found = ()
+    else:
+        found = tuple((i.name, i.expression) for i in integrals(derivation).found if i.name != "energy T + V")
+    if len(_FOUND) > 16:
+        _FOUND.clear()
+    _FOUND[id(derivation)] = (derivation, found)
+    return found
 
 
 def load_generated(derivation: Derivation) -> ModuleType:

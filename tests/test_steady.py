@@ -1,0 +1,86 @@
+"""Steady motions against the textbook: the rolling disk's circular motions and the top's precession.
+
+The disk's steady turning relation is written here from the balance of
+moments about its centre (Routh, Advanced Rigid Dynamics, art. 244;
+Neimark and Fufaev, Dynamics of Nonholonomic Systems, III.5): with lean θ,
+turning rate Ω, spin ω about the axle, I_a = mr²/2 and I_d = mr²/4,
+
+    (I_a + m r²) Ω (Ω sin θ + ω) cos θ − I_d Ω² sin θ cos θ + m g r sin θ = 0.
+
+The top's steady precession (Goldstein 5.7): m g l = φ̇ (C ω₃ − A_O φ̇ cos θ).
+"""
+
+from __future__ import annotations
+
+import json
+
+import sympy as sp
+from typer.testing import CliRunner
+
+from conftest import SYSTEMS, derived
+from gacli.cli import app
+from gacli.steady.motions import steady_motions
+
+
+def _s(name: str) -> sp.Symbol:
+    return sp.Symbol(name, real=True)
+
+
+def test_disk_circular_motions_satisfy_the_textbook_relation():
+    m, r, g, lean, turn, spin = (_s(n) for n in ("m", "r", "g", "lean", "dot(yaw)", "dot(spin)"))
+    result = steady_motions(derived("rolling_disk"))
+    assert result.ignorable == ("x", "y", "yaw", "spin")
+    turning = [f for f in result.families if set(f.free) == {turn, lean}]
+    assert len(turning) == 1
+    values = dict(turning[0].values)
+    assert values[_s("dot(lean)")] == 0
+    I_a, I_d = m * r**2 / 2, m * r**2 / 4
+    relation = ((I_a + m * r**2) * turn * (turn * sp.sin(lean) + spin) * sp.cos(lean)
+                - I_d * turn**2 * sp.sin(lean) * sp.cos(lean) + m * g * r * sp.sin(lean))
+    assert sp.simplify(relation.xreplace({spin: values[spin]})) == 0
+    # Dividing by Ω cos θ is the condition the family states.
+    assert any(c.has(turn) and c.has(sp.cos(lean)) for c in turning[0].conditions)
+
+
+def test_disk_upright_rolling_is_a_family_of_its_own():
+    families = steady_motions(derived("rolling_disk")).families
+    upright = [dict(f.values) for f in families if f.free == (_s("dot(spin)"),)]
+    assert {_s("dot(yaw)"): 0, _s("dot(lean)"): 0, _s("lean"): 0} in upright
+
+
+def test_top_steady_precession():
+    m, g, l, A, C, theta, phi_rate, q = (_s(n) for n in ("m", "g", "l", "A", "C", "theta", "dot(phi)", "dot(q)"))
+    result = steady_motions(derived("spinning_top"))
+    precessing = [dict(f.values) for f in result.families if set(f.free) == {phi_rate, theta}]
+    assert len(precessing) == 1
+    A_O = A + m * l**2
+    assert sp.simplify(m * g * l - phi_rate * (C * precessing[0][q] - A_O * phi_rate * sp.cos(theta))) == 0
+
+
+def test_sleigh_runs_straight_at_any_speed():
+    families = steady_motions(derived("chaplygin_sleigh")).families
+    assert [(dict(f.values), f.free) for f in families] == [({_s("dot(theta)"): 0}, (_s("dot(s)"),))]
+
+
+def test_steady_command_formats():
+    text = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml")])
+    assert text.exit_code == 0, text.output
+    assert "dot(theta) = 0" in text.output and "x, y, theta" in text.output
+    data = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "json"])
+    assert json.loads(data.output)["families"] == [
+        {"values": {"dot(theta)": "0"}, "free": ["dot(s)"], "relations": [], "conditions_nonzero": []}]
+    bad = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "html"])
+    assert bad.exit_code == 2
+
+
+def test_a_system_too_large_for_symbolic_work_is_refused_plainly():
+    result = CliRunner().invoke(app, ["steady", str(SYSTEMS / "whipple_bicycle.yaml")])
+    assert result.exit_code == 1 and "too large for symbolic work" in result.output
+    assert "Traceback" not in result.output
+
+
+def test_latex_format_is_amsmath():
+    result = CliRunner().invoke(app, ["steady", str(SYSTEMS / "rolling_disk.yaml"), "--format", "latex"])
+    assert result.exit_code == 0, result.output
+    assert result.output.count("\\begin{align*}") == result.output.count("\\end{align*}") == 3
+    assert "\\dot{\\varphi} &= " in result.output    # the file's latex: for spin
