@@ -83,8 +83,11 @@ def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
     for axis, angle in reversed(rotations):
         omega += (after.T * unit(axis)) * differential(angle)
         after = simple_rotation(axis, angle) * after
+    # Sines and cosines of sums are written out (a rotation by 2q or q + c); of plain angles there is
+    # nothing to write out, and the walk would cost the tree of a long chain, not its graph.
+    plain = all(angle.is_Symbol or angle.is_number or (-angle).is_Symbol for _, angle in rotations)
     return Frame(name, sp.ImmutableMatrix(_product(parent.dcm.tolist(), relative)),
-                 sp.ImmutableMatrix(omega.applyfunc(sp.expand_trig)), chain=chain)
+                 sp.ImmutableMatrix(omega if plain else omega.applyfunc(sp.expand_trig)), chain=chain)
 
 
 def canonical_chain(start: Sequence[tuple[str, sp.Expr]], rotations: Sequence[tuple[str, sp.Expr]],
