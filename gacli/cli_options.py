@@ -8,16 +8,6 @@ import contextlib
 import typer
 
 
-def symbolic_lines(L, derivation, pairs, names) -> list[str]:
-    A, B = L.linearize_symbolic(derivation, L.symbolic_point(derivation, pairs))
-    if not names:
-        return [f"A = {A}", f"B = {B}"]
-    from gacli.emit.naming import layout
-
-    idx = L.state_indices(names, layout(derivation).state)
-    return [f"A = {A.extract(idx, idx)}"]
-
-
 def numeric_lines(L, derivation, pairs, overrides, names) -> list[str]:
     from gacli.emit.naming import parameter_defaults
 

@@ -31,6 +31,18 @@ class Form:
     def names(self) -> tuple[str, ...]:
         return tuple(name for name, _ in self.coefficients)
 
+    def __add__(self, other: "Form") -> "Form":
+        return self._combined(other, 1)
+
+    def __sub__(self, other: "Form") -> "Form":
+        return self._combined(other, -1)
+
+    def _combined(self, other: "Form", sign: int) -> "Form":
+        """self ± other, coefficients that cancel left out."""
+        names = dict.fromkeys(self.names + other.names)
+        pairs = ((n, self.coefficient(n) + sign * other.coefficient(n)) for n in names)
+        return Form(tuple((n, c) for n, c in pairs if c != 0), self.dt + sign * other.dt)
+
 
 @dataclass(frozen=True)
 class Declared:
@@ -70,6 +82,11 @@ class QuasiCoordinate(Declared):
     """θ with dθ = Σ C_s dq_s + C dt (eq. 14.2), or primitive when differential is None."""
 
     differential: Form | None = None
+
+    @property
+    def definition(self) -> Form | None:
+        """Its definition as a row of A ṙ + a₀ = 0: dθ − Σ C_s dq_s − C dt (eq. 14.2); None when primitive."""
+        return None if self.differential is None else Form(((self.name, sp.S.One),)) - self.differential
 
 
 @dataclass(frozen=True)

@@ -120,15 +120,19 @@ def _trivial(expr: sp.Basic) -> bool:
 
 
 
-def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic]) -> list[sp.Basic]:
-    """``xreplace`` over the graph: each distinct subexpression rebuilt once."""
+def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic],
+               evaluate: bool = True) -> list[sp.Basic]:
+    """``xreplace`` over the graph: each distinct subexpression rebuilt once; with ``evaluate`` False,
+    sums, products and powers are rebuilt unevaluated (a program inlined, gacli.mechanics.program)."""
     rebuilt: dict[sp.Basic, sp.Basic] = {}
     changed: dict[sp.Basic, bool] = {}  # by flag, not identity: see shared_subexpressions
     for node in postorder(exprs):
         if node in mapping:
             rebuilt[node], changed[node] = mapping[node], True
         elif node.args and any(changed[a] for a in node.args):
-            rebuilt[node], changed[node] = node.func(*(rebuilt[a] for a in node.args)), True
+            args = [rebuilt[a] for a in node.args]
+            plain = not evaluate and isinstance(node, (sp.Add, sp.Mul, sp.Pow))
+            rebuilt[node], changed[node] = (node.func(*args, evaluate=False) if plain else node.func(*args)), True
         else:
             rebuilt[node], changed[node] = node, False
     return [rebuilt[e] for e in exprs]

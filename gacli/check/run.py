@@ -23,7 +23,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from gacli.budget import DEFAULT_TIMEOUT, STEP_LOAD, STEP_READ, forget_frames  # one name for each step, shared with every command
+from gacli.budget import DEFAULT_TIMEOUT, STEP_READ, forget_frames  # one name for each step, shared with every command
 from gacli.check.declarations import unused_declarations
 from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli.algebra import trig
 from gacli.loader import frames as F
 from gacli.read.expr.build import Scope
 from gacli.model import Body, Force, Form, Torque
@@ -218,8 +217,7 @@ class Geometry:
         own = self.body_frames.get(body)
         if own is None or own.text not in self.frames:
             return False
-        turn = sp.Matrix(self.frames[own.text].dcm).T * sp.Matrix(frame.dcm)
-        return not self._moves(turn.applyfunc(lambda x: trig.reduce(sp.expand(x))))
+        return self._fixed_turn(self.frames[own.text], frame) is not None
 
     def _reaction(self, load: LoadDecl, torque: Torque, bodies: dict[str, Body]) -> Torque | None:
         """−torque on the body the motor is mounted on, turned from the acting body's axes into its own."""

@@ -43,9 +43,8 @@ class MovedInertia:
             point = self._point_named(decl.inertia_about, f"{where}.inertia_about")
             if point is None:
                 return None
-            r = sp.Matrix(body.dcm).T * (sp.Matrix(position) - sp.Matrix(point))
-            r = sp.Matrix([trig.reduce(sp.expand(x)) for x in r])
-            if self._moves(r):
+            r = self._constant(sp.Matrix(body.dcm).T * (sp.Matrix(position) - sp.Matrix(point)))
+            if r is None:
                 self.error(decl.inertia_about, f"{where}.inertia_about",
                            f"'{decl.inertia_about.text}' is not fixed in the body: it moves relative to its centre")
                 return None
@@ -62,17 +61,25 @@ class MovedInertia:
         if frame is None:
             self.error(decl.inertia_in, f"{where}.inertia_in", f"'{decl.inertia_in.text}' is not a frame")
             return None
-        R = (sp.Matrix(body.dcm).T * sp.Matrix(frame.dcm)).applyfunc(lambda x: trig.reduce(sp.expand(x)))
-        if self._moves(R):
+        R = self._fixed_turn(body, frame)
+        if R is None:
             self.error(decl.inertia_in, f"{where}.inertia_in",
                        f"the frame '{frame.name}' turns relative to the body's frame: the inertia in its axes "
                        "would change with the motion")
             return None
         return R * inertia * R.T
 
-    def _moves(self, m: sp.Matrix) -> bool:
-        """Whether anything but parameters is left in ``m`` (coordinates, t, functions)."""
-        return any(not (x.free_symbols <= set(self.known) | self._parameter_symbols()) for x in m)
+    def _fixed_turn(self, outer, inner) -> sp.Matrix | None:
+        """The turn from ``inner``'s axes to ``outer``'s, C_outerᵀ C_inner, when it is constant (the
+        frame fixed in the other); None when it moves."""
+        return self._constant(sp.Matrix(outer.dcm).T * sp.Matrix(inner.dcm))
+
+    def _constant(self, m: sp.Matrix) -> sp.Matrix | None:
+        """``m`` reduced by sin² + cos² = 1, or None when anything but parameters is left in it
+        (coordinates, t, functions)."""
+        m = m.applyfunc(lambda x: trig.reduce(sp.expand(x)))
+        allowed = set(self.known) | self._parameter_symbols()
+        return None if any(not x.free_symbols <= allowed for x in m) else m
 
     def _parameter_symbols(self) -> set:
         return {S.value(s.name) for s in self.decl.of_kind("parameter")}

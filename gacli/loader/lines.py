@@ -44,7 +44,7 @@ class Lines:
             else:
                 c = self.expression(load.damper, f"{where}.damper", self.scopes.load)
                 if c is not None:
-                    work = plus(work, self._damper_work(c, d, length))
+                    work = (work or Form(())) + self._damper_work(c, d, length)
         return potential, work
 
     def _line(self, load: LoadDecl, bodies: dict[str, Body]):
@@ -72,10 +72,3 @@ class Lines:
                 coefficients.append((q.name, -c * rate * along / length))
         return Form(tuple(coefficients))
 
-
-def plus(a: Form | None, b: Form) -> Form:
-    """The sum of two forms (a None: b)."""
-    if a is None:
-        return b
-    names = list(dict.fromkeys(a.names + b.names))
-    return Form(tuple((n, a.coefficient(n) + b.coefficient(n)) for n in names), a.dt + b.dt)

@@ -18,7 +18,7 @@ import sympy as sp
 from gacli.loader.contact import RollingContacts
 from gacli.loader.bodies import Geometry
 from gacli.loader.inertia import MovedInertia
-from gacli.loader.lines import Lines, plus as _sum_forms
+from gacli.loader.lines import Lines
 from gacli.loader.forms import Forms
 from gacli.loader.frame_records import frame_model
 from gacli.algebra import symbols as S
@@ -180,7 +180,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
         potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
         springs, dampers = self._line_loads(bodies)
         potential = springs + (potential if potential is not None else 0)
-        work = dampers if work is None else (work if dampers is None else _sum_forms(work, dampers))
+        work = dampers if work is None else (work if dampers is None else work + dampers)
         constraints = tuple(c for i, d in enumerate(self.decl.constraints) for c in self._constraints_of(i, d))
         constraints += self._rolling_constraints(bodies)
         independent = self._independent()

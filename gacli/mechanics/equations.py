@@ -20,7 +20,6 @@ from collections.abc import Callable
 
 import sympy as sp
 
-from gacli.algebra import symbols as S
 from gacli.algebra.canonical import product as canonical_product
 from gacli.errors import DerivationError
 from gacli.mechanics.forces import generalized_forces

@@ -100,16 +100,9 @@ def relation_rows(system: System) -> tuple[list[tuple[str, object, Form]], list[
             kept = np.vstack([kept, numeric])
         rows.append((f"constraints[{i}]", c.location, c.form))
     for q in system.quasi_coordinates:
-        if q.differential is not None:
-            own = Form(((q.name, sp.S.One),))
-            rows.append((f"quasi_coordinates.{q.name}", q.location, _subtract(own, q.differential)))
+        if q.definition is not None:
+            rows.append((f"quasi_coordinates.{q.name}", q.location, q.definition))
     return rows, list(system.rate_names)
-
-
-def _subtract(a: Form, b: Form) -> Form:
-    names = list(dict.fromkeys(a.names + b.names))
-    coefficients = tuple((n, a.coefficient(n) - b.coefficient(n)) for n in names)
-    return Form(tuple((n, c) for n, c in coefficients if c != 0), a.dt - b.dt)
 
 
 def solve_rates(system: System) -> Rates:

@@ -20,7 +20,6 @@ from gacli.algebra.matrices import rank
 from gacli.frame_model import INERTIAL
 from gacli.mechanics.program import rows as R
 from gacli.mechanics.program.assemble import Passes, Sums, assemble
-from gacli.mechanics.program import contacts as C
 from gacli.mechanics.program.contacts import contact
 from gacli.mechanics.program.formbodies import FormMotion, assemble_bodies
 from gacli.mechanics.program.forms import FormRows, form_rows

@@ -28,7 +28,7 @@ from gacli.mechanics.program.forms import time_derivative
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale
-from gacli.model import Body, Form, System
+from gacli.model import Form, System
 
 
 class FormMotion:
@@ -40,12 +40,19 @@ class FormMotion:
         self.names = list(system.rate_names)
         self.substitution = substitution  # dependent rate symbols → their program values
         self.D = time_derivative(system, passes.actual, tape)
+        self._points: dict[tuple, tuple] = {}  # a force at a body's centre asks for the body's motion again
 
     def point(self, position) -> tuple[list[tuple], tuple]:
         """(V_r for each speed, a_rest) of a point at ``position`` in N."""
+        key = tuple(as_expr(x) for x in position)
+        if key not in self._points:
+            self._points[key] = self._point(key)
+        return self._points[key]
+
+    def _point(self, position: tuple) -> tuple[list[tuple], tuple]:
         tape, actual = self.tape, self.passes.actual
         symbols = [S.value(q) for q in self.coordinates]
-        J = jacobian_rows([as_expr(x) for x in position], symbols)  # 3 × n: ∂p/∂q
+        J = jacobian_rows(list(position), symbols)  # 3 × n: ∂p/∂q
         columns = {q: tape.vec(J[i][j] for i in range(3)) for j, q in enumerate(self.coordinates)}
         V = [self._along(columns, p) for p in self.passes.partial]
         # d/dt of the closed forms ∂p/∂q, not of their names on the tape: q̈ itself is in V and γ.
@@ -87,7 +94,7 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
         _add_translation(tape, mass, V, a_rest, sums)
         if body.is_rigid:
             rotations[body.name] = motion.rotation(body.rotation)
-            _add_rotation(tape, _inertia(body), *rotations[body.name], sums)
+            _add_rotation(tape, body.inertia.tolist(), *rotations[body.name], sums)
     tape.stage = "F"
     for force in system.forces:
         V, _ = motion.point(force.point)
@@ -100,11 +107,6 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
         tau = tuple(motion.loaded(c) for c in torque.vector)
         for r, w in enumerate(rotations[torque.body][0]):
             sums.F[r].append(tape.let(dot(w, tau)))
-
-
-def _inertia(body: Body) -> list[list[sp.Expr]]:
-    """The body-axis inertia: constant, as the loader reads it (its scope has parameters only)."""
-    return [[body.inertia[i, j] for j in range(3)] for i in range(3)]
 
 
 def _add_translation(tape: Tape, mass, V: list, a_rest: tuple, sums: Sums) -> None:

@@ -68,12 +68,7 @@ def form_rows(system: System) -> FormRows:
         if c.rates is not None:
             raise Unsupported("a constraint nonlinear in the rates is not supported")
         forms.append(c.form)
-    for q in system.quasi_coordinates:
-        if q.differential is not None:
-            d = q.differential
-            names = list(dict.fromkeys((q.name,) + d.names))
-            own = {q.name: sp.S.One}
-            forms.append(Form(tuple((n, own.get(n, ZERO) - d.coefficient(n)) for n in names), -d.dt))
+    forms += [q.definition for q in system.quasi_coordinates if q.definition is not None]
     return FormRows(tuple(forms))
 
 

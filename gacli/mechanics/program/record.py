@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.algebra.graph import free_symbols, postorder, substitute
+from gacli.algebra.graph import free_symbols, substitute
 from gacli.mechanics.program.tape import Tape
 
 
@@ -84,27 +84,9 @@ def inline(program: Program, evaluate: bool = False) -> tuple[list[sp.Expr], lis
     """
     values: dict[sp.Symbol, sp.Expr] = {}
     for name, e in program.assignments:
-        values[name] = _substituted([e], values, evaluate)[0]
+        values[name] = substitute([e], values, evaluate)[0]
     outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
-    outputs = _substituted(outputs, values, evaluate)
+    outputs = substitute(outputs, values, evaluate)
     n, kk = len(program.rates), program.k * program.k
     return outputs[:n], outputs[n:n + kk], outputs[n + kk:]
 
-
-def _substituted(exprs: list[sp.Expr], values: dict, evaluate: bool) -> list[sp.Expr]:
-    """gacli.algebra.graph.substitute, rebuilding sums, products and powers unevaluated unless ``evaluate``."""
-    if evaluate:
-        return substitute(exprs, values)
-    rebuilt: dict[sp.Basic, sp.Basic] = {}
-    changed: dict[sp.Basic, bool] = {}  # by flag, not identity (gacli.algebra.graph.shared_subexpressions)
-    for node in postorder(exprs):
-        if node in values:
-            rebuilt[node], changed[node] = values[node], True
-        elif node.args and any(changed[a] for a in node.args):
-            args = [rebuilt[a] for a in node.args]
-            plain = isinstance(node, (sp.Add, sp.Mul, sp.Pow))
-            rebuilt[node] = node.func(*args, evaluate=False) if plain else node.func(*args)
-            changed[node] = True
-        else:
-            rebuilt[node], changed[node] = node, False
-    return [rebuilt[e] for e in exprs]

@@ -80,7 +80,7 @@ class Solver:
         self.tape, self.A = tape, A
         order, rows, cols = plan(A)
         self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
-        self.blocks = [_Block.of(tape, A, r, c) for r, c in _split(tape, A, rows, cols)]
+        self.blocks = [_Block.of(tape, A, r, c, orthogonal) for r, c, orthogonal in _split(tape, A, rows, cols)]
 
     def solve(self, b: list) -> list[sp.Expr]:
         tape, A = self.tape, self.A
@@ -94,19 +94,28 @@ class Solver:
         return [x[j] for j in range(len(A))]
 
 
-def _split(tape: Tape, A: list[list], rows: list[int], cols: list[int]) -> list[tuple[list[int], list[int]]]:
-    """The rest after the pivots as blocks: one, or its block-triangular order when it is too large."""
+def _split(tape: Tape, A: list[list], rows: list[int], cols: list[int]) -> list[tuple[list, list, bool]]:
+    """The rest after the pivots as blocks (rows, columns, whether orthogonal): one, or its
+    block-triangular order when it is too large and not orthogonal."""
     if not rows:
         return []
-    whole = [[A[i][j] for j in cols] for i in rows]
-    if len(rows) <= BLOCK or _orthogonal(tape, whole, write=False) is not None:
-        return [(rows, cols)]
-    blocks = block_triangular([[x != 0 for x in row] for row in whole]) or [(tuple(range(len(rows))),) * 2]
-    out = [([rows[i] for i in r], [cols[j] for j in c]) for r, c in blocks]
-    for r, c in out:
-        if len(r) > BLOCK and _orthogonal(tape, [[A[i][j] for j in c] for i in r], write=False) is None:
+    rest = _sub(A, rows, cols)
+    whole = _orthogonal(tape, rest)
+    if len(rows) <= BLOCK or whole:
+        return [(rows, cols, whole)]
+    blocks = block_triangular([[x != 0 for x in row] for row in rest]) or [(tuple(range(len(rows))),) * 2]
+    out = []
+    for r, c in blocks:
+        r, c = [rows[i] for i in r], [cols[j] for j in c]
+        orthogonal = _orthogonal(tape, _sub(A, r, c))
+        if len(r) > BLOCK and not orthogonal:
             raise Unsupported("the rows couple more dependent rates than the adjugate solve takes")
+        out.append((r, c, orthogonal))
     return out
+
+
+def _sub(A: list[list], rows, cols) -> list[list]:
+    return [[A[i][j] for j in cols] for i in rows]
 
 
 @dataclass(frozen=True)
@@ -119,10 +128,12 @@ class _Block:
     adjugate: tuple | None
 
     @staticmethod
-    def of(tape: Tape, A: list[list], rows, cols) -> "_Block":
-        B = [[A[i][j] for j in cols] for i in rows]
-        lengths = _orthogonal(tape, B) if len(rows) > 1 else None
-        return _Block(tuple(rows), tuple(cols), lengths, adjugate(tape, B) if lengths is None else None)
+    def of(tape: Tape, A: list[list], rows, cols, orthogonal: bool) -> "_Block":
+        B = _sub(A, rows, cols)
+        if orthogonal:
+            lengths = [tape.let(1 / tape.let(sp.Add(*(x * x for x in row)))) for row in B]
+            return _Block(tuple(rows), tuple(cols), lengths, None)
+        return _Block(tuple(rows), tuple(cols), None, adjugate(tape, B))
 
     def solve(self, tape: Tape, A: list[list], rest: list) -> dict[int, sp.Expr]:
         if self.lengths is not None:
@@ -133,16 +144,9 @@ class _Block:
                 for a, j in enumerate(self.cols)}
 
 
-def _orthogonal(tape: Tape, B: list[list], write: bool = True) -> list[sp.Expr] | None:
-    """1/|row|² of each row when the rows are orthogonal identically (the tape's zero test); None
-    otherwise (and, with ``write`` False, [] when they are, nothing written on the tape)."""
+def _orthogonal(tape: Tape, B: list[list]) -> bool:
+    """Whether the rows of B (more than one) are orthogonal identically (the tape's zero test)."""
     n = len(B)
-    if n > ORTHOGONAL_LIMIT:
-        return None
-    for i in range(n):
-        for j in range(i + 1, n):
-            if not tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))):
-                return None
-    if not write:
-        return []
-    return [tape.let(1 / tape.let(sp.Add(*(x * x for x in row)))) for row in B]
+    if n < 2 or n > ORTHOGONAL_LIMIT:
+        return False
+    return all(tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))) for i in range(n) for j in range(i + 1, n))
