@@ -100,17 +100,17 @@ def _budget(path: Path, seconds: float):
         yield state
 
 
-def _derive(path: Path, state, for_code: bool = False):
+def _derive(path: Path, state, needs: str = ""):
     """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step."""
     from gacli.display import console
-    from gacli.pipeline import run
+    from gacli.pipeline import CLOSED, run
 
     with console.progress(f"deriving {path.name}") as spinner:
         def step(name: str) -> None:
             state(name)
             spinner(name)
 
-        return run(path, for_code=for_code, progress=step).derivation
+        return run(path, needs=needs or CLOSED, progress=step).derivation
 
 
 @app.callback()
@@ -146,7 +146,7 @@ def derive(
 
             refuse_special(output)
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state, for_code=format in CODE_FORMATS and not reactions)
+            derivation = _derive(file, state, needs=_needs(format, reactions))
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
@@ -171,6 +171,15 @@ def derive(
                 console.note(f"wrote {path}")
 
 
+def _needs(format: str, reactions: bool) -> str:
+    """What ``derive`` reads of the derivation (gacli.pipeline): reactions need the closed forms."""
+    from gacli.pipeline import CLOSED, CODE, PRINTOUT
+
+    if reactions:
+        return CLOSED
+    return CODE if format in CODE_FORMATS else PRINTOUT
+
+
 def _text_report(derivation, steps: bool, reactions: bool):
     from gacli.display.report import derivation_report, reactions_report, steps_report
 
@@ -192,7 +201,7 @@ def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
 
     with _boundary():
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state)
+            derivation = _derive(file, state, needs=_needs("text", False))
             state("writing the Gibbs function")
             sections = tuple(gibbs_report(derivation))
         console.sections("", sections)

@@ -43,30 +43,41 @@ def read(path: str | Path) -> SourceFile:
     return read_source(path)
 
 
-def run(path: str | Path, *, for_code: bool = False, progress: Callable[[str], None] | None = None,
+# What a command reads of the derivation, which decides how much of it is formed.
+CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, linearize, --reactions, ...)
+CODE = "code"  # q̇, M and F as generated code computes them
+PRINTOUT = "printout"  # q̇, M and F as derive, gibbs and LaTeX print them, with the count of the rows
+
+
+def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None] | None = None,
         loaded: Callable[[System], None] | None = None) -> Run:
     """Read, load and derive ``path`` once.
 
-    ``for_code``: a system whose generated code is its straight-line program
-    alone (:mod:`gacli.mechanics.code`) is derived by that, and its rolling
-    rows are never formed. ``loaded`` sees the System before it is derived
-    (gacli check's notes on the declarations, kept if the derivation fails).
+    ``needs``: for CODE or PRINTOUT, a system whose generated code is its
+    straight-line program alone (:func:`gacli.mechanics.equations.derive_for_code`)
+    is derived by that, and the closed forms are never formed: its printout
+    names the program's quantities (docs/printing.md). CODE does not form the
+    rolling rows either; PRINTOUT does, for the count ℓ of the rows it reports.
+    ``loaded`` sees the System before it is derived (gacli check's notes on the
+    declarations, kept if the derivation fails).
     """
     step = progress or (lambda name: None)
     step(STEP_READ)
     source = read(path)
-    return run_source(source, for_code=for_code, progress=step, loaded=loaded)
+    return run_source(source, needs=needs, progress=step, loaded=loaded)
 
 
-def run_source(source: SourceFile, *, for_code: bool = False, progress: Callable[[str], None] | None = None,
+def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[str], None] | None = None,
                loaded: Callable[[System], None] | None = None) -> Run:
     """:func:`run` from a source already read."""
     step = progress or (lambda name: None)
     step(STEP_LOAD)
     system, complete = load_in_stages(source)
-    if for_code and (program := derive_for_code(system)) is not None:
+    if needs == CODE and (program := derive_for_code(system)) is not None:
         return Run(source, system, program)
     system = complete()
     if loaded is not None:
         loaded(system)
+    if needs == PRINTOUT and (program := derive_for_code(system)) is not None:
+        return Run(source, system, program)
     return Run(source, system, derive(system, progress=step))

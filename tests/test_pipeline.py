@@ -115,3 +115,36 @@ def test_a_fifo_output_is_refused_before_the_derivation(tmp_path, monkeypatch):
     assert result.exit_code == 1
     assert "not a regular file" in result.output
     assert fifo.exists() and not fifo.is_file()
+
+
+def test_a_large_system_prints_without_forming_its_closed_forms(monkeypatch):
+    # The bicycle's printout names the program's quantities: the chapter's closed forms, which
+    # cost most of a text derive and are never printed for it, must not be formed (issue #28).
+    import gacli.mechanics.equations as equations
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the closed forms were formed")
+
+    monkeypatch.setattr(equations, "_derive", refuse)
+    out = _derive(str(SYSTEMS / "whipple_bicycle.yaml"))
+    assert "Named quantities" in out and "k = n + p - d - l = " in out
+    assert "independent: " in out and "(as given in the file)" in out
+
+
+def test_a_chain_without_independent_rates_takes_the_program(monkeypatch):
+    # No rows: every rate is independent, which both routes choose alike; a chain of 40 frames
+    # turned about alternating axes is linear in the program and blew up in the closed forms.
+    import gacli.mechanics.equations as equations
+
+    monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
+    frames = "\n".join(f"  f{i}: {{{'' if i == 1 else f'parent: f{i - 1}, '}rotations: [[z, a], [x, b]]}}"
+                       for i in range(1, 41))
+    text = ("gacli: 1\nname: chain\nparameters: {m: {value: 1}, I: {value: 0.1}, g: {value: 9.81}}\n"
+            f"coordinates: [a, b]\nframes:\n{frames}\nbodies:\n"
+            "  body: {mass: m, position: {f40: [1, 0, 0]}, frame: f40, inertia: [I, I, I]}\n"
+            "loads:\n  - {force: {N: [0, 0, -m*g]}, at: body}\n")
+    from gacli.pipeline import PRINTOUT, run_source
+    from gacli.read.source import parse_source
+
+    d = run_source(parse_source(text.encode(), "chain.yaml"), needs=PRINTOUT).derivation
+    assert not d.closed and d.independent == ("a", "b")

@@ -52,6 +52,8 @@ def named_of(d) -> N.Named:
     """q̇, M and F of ``d`` through named quantities: the program's where generated code takes the
     program, else the closed forms' shared subexpressions (never derived again)."""
     code, taken = d.code, N.declared_names(d)
+    if not d.closed:
+        return N.from_program(d.program, taken)
     if code.route == "program":
         from gacli.mechanics.code import program_for
 

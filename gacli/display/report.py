@@ -25,13 +25,23 @@ class Section:
     lines: tuple[str, ...]
 
 
+def rows_used(d: Derivation) -> int:
+    """ℓ, the independent constraint rows: as the closed forms solved them, else k = n + p − d − ℓ
+    read backwards from the program's speeds."""
+    if d.closed:
+        return d.rates.constraints_used
+    s = d.system
+    defined = sum(1 for q in s.quasi_coordinates if q.differential is not None)
+    return len(s.coordinates) + len(s.quasi_coordinates) - defined - d.k
+
+
 def dependent_rows(d: Derivation) -> tuple[str, ...]:
     """The constraint rows left out of l: rolling rows that say again what the others say.
 
     ``gacli check`` lists every row it classifies; this is what lets it and
     ``gacli derive`` agree on why l is smaller than the number of rows.
     """
-    if d.rates.constraints_used == len(d.system.constraints):
+    if rows_used(d) == len(d.system.constraints):
         return ()
     from gacli.mechanics.rates import relation_rows
 
@@ -49,8 +59,8 @@ def freedom(d: Derivation) -> Section:
     s = d.system
     n, p = len(s.coordinates), len(s.quasi_coordinates)
     dq = sum(1 for q in s.quasi_coordinates if q.differential is not None)
-    ell = d.rates.constraints_used
-    how = "chosen automatically" if d.rates.chosen_automatically else "as given in the file"
+    ell = rows_used(d)
+    how = "as given in the file" if s.independent is not None else "chosen automatically"
     dependent = dependent_rows(d)
     why = f" (the rolling contacts give {rank_note(len(s.constraints), dependent)})" if dependent else ""
     return Section("Degrees of freedom", (
@@ -126,7 +136,7 @@ def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
-    if not displayable(d) or not L.tidy_worth_trying(d):
+    if not d.closed or not displayable(d) or not L.tidy_worth_trying(d):
         return L.named_of(d)
     limit = L.limit(d)
     if printed.coefficients(d, limit) is None:

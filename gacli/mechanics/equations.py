@@ -37,12 +37,20 @@ def derive_for_code(system: System) -> Derivation | None:
     """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
     would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
     None otherwise, and the caller derives the closed forms as usual (docs/program.md)."""
-    # Without `independent` in the file, the choice is the chapter's route's to make
-    # (gacli.mechanics.rates), from the rows this route does not load.
-    program = program_for(system) if system.independent is not None else None
+    program = program_for(system) if _same_choice(system) else None
     if program is None or program_operations(program) < PROGRAM_ALONE:
         return None
     return Derivation(system, program=program)
+
+
+def _same_choice(system: System) -> bool:
+    """Whether the program's independent rates are the chapter's: given in the file, or chosen
+    from the same rows. Both routes take the earliest declared rates the rows leave free
+    (gacli.mechanics.rates); a rolling contact's rows are formed apart by each route, and the
+    two sets need not pick alike where the choice is numerically close."""
+    if system.independent is not None:
+        return True
+    return system.frames is None or not system.frames.rolling
 
 
 def derive(system: System, *, progress: Callable[[str], None] | None = None) -> Derivation:
