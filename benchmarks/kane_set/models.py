@@ -348,6 +348,8 @@ SYSTEMS = {
     "quaternion_top": (HERE / "quaternion_top.yaml", quaternion_top,
                        "heavy top about a fixed point, Euler parameters, body rates"),
     "four_bar": (HERE / "four_bar.yaml", four_bar, "four-bar linkage, two holonomic constraints"),
+    "four_bar_coincide": (ROOT / "systems" / "four_bar_linkage.yaml", four_bar,
+                          "the same with frames, closed by `coincide` (systems/)"),
     "planar_chain": (HERE / "planar_chain.yaml", planar_chain, "3 rigid bars in a plane"),
     "spatial_chain": (HERE / "spatial_chain.yaml", spatial_chain, "3 rigid links, ball joints, XYZ angles"),
     "spatial_chain6": (HERE / "spatial_chain6.yaml", lambda: spatial_chain(6),

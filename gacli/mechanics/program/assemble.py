@@ -57,6 +57,7 @@ class UnitMotion:
     omega: tuple
     a_rest: tuple
     alpha_rest: tuple
+    homes: tuple  # per speed, the point whose velocity V is, turned (_home)
 
 
 def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
@@ -66,7 +67,9 @@ def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
 def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     tape, tree = motion.tape, motion.tree
     tape.stage = "partials"
-    V = [motion.velocity(u.point, p, u.frame) for p in passes.partial]
+    homes = tuple(_home(motion, u.point, p) for p in passes.partial)
+    # From each home along u's frame: one merged turn, not a turn per link of the chain.
+    V = [motion.velocity(h, p, u.frame) for h, p in zip(homes, passes.partial)]
     W = [tree.omega(u.frame, p) for p in passes.partial] if u.rigid else []
     sigma = [[_sigma(motion, w, p) for p in passes.partial] for w in u.wheels]
     tape.stage = "rest"
@@ -76,7 +79,7 @@ def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     if u.rigid:
         omega = tree.omega(u.frame, passes.actual)
         alpha = tape.vec(add(tree.alpha0(u.frame, passes.actual), tree.omega(u.frame, passes.gamma)))
-    return UnitMotion(V, W, sigma, omega, a_rest, alpha)
+    return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes)
 
 
 def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Sums) -> None:
@@ -91,7 +94,8 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     k = len(passes.partial)
     for r in range(k):
         for s in range(r, k):
-            sums.M[r][s].append(mass * tape.let(dot(m.V[r], m.V[s])))
+            pair = (m.homes[r], passes.partial[r]), (m.homes[s], passes.partial[s])
+            sums.M[r][s].append(mass * tape.let(_home_dot(motion, *pair)))
     if inertia is not None:
         _rotation_mass(motion, u, m, inertia, lam, sums)
     tape.stage = "F"
@@ -100,6 +104,29 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
     if inertia is not None:
         _rotation_forcing(motion, u, m, inertia, lam, loads, passes, sums)
+
+
+def _home(motion: Motion, point: str | None, rates: Pass) -> str | None:
+    """The highest point of ``point``'s chain whose velocity for the pass is the point's own, turned:
+    the links below it add nothing for these rates (a chain's far link, for the speed of a joint
+    above it). Its velocity along its own frame is the partial velocity at its simplest."""
+    while point is not None and point != motion.root:
+        link = motion.links[point]
+        own = add(cross(motion.tree.omega(link.frame, rates), link.components), motion._moving(link, rates))
+        if link.parent is None or any(c != 0 for c in own):
+            break
+        point = link.parent
+    return point
+
+
+def _home_dot(motion: Motion, first: tuple[str | None, Pass], second: tuple[str | None, Pass]) -> sp.Expr:
+    """V_r·V_s, each partial velocity taken at its home point and the two met in the frame of
+    the lower one: |V_r|² of a far link is the joint's lever squared, as Kane's vectors give it,
+    not a sum of squares of turned components (cos² + sin²)."""
+    (home_r, pass_r), (home_s, pass_s) = first, second
+    if home_r is None or home_s is None:
+        return sp.S.Zero
+    return dot(motion.velocity(home_r, pass_r, motion.frame_of(home_s)), motion.velocity(home_s, pass_s))
 
 
 def _rotation_mass(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list, sums: Sums) -> None:
