@@ -100,17 +100,18 @@ def _budget(path: Path, seconds: float):
         yield state
 
 
-def _derive(path: Path, state, needs: str = ""):
-    """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step."""
+def _derive(path: Path, state, needs: tuple[bool, bool] | None = None):
+    """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step;
+    ``needs`` is (for generated code, with reactions) for derive's outputs, None for the closed forms."""
     from gacli.display import console
-    from gacli.pipeline import CLOSED, run
+    from gacli.pipeline import CLOSED, needs_of, run
 
     with console.progress(f"deriving {path.name}") as spinner:
         def step(name: str) -> None:
             state(name)
             spinner(name)
 
-        return run(path, needs=needs or CLOSED, progress=step).derivation
+        return run(path, needs=CLOSED if needs is None else needs_of(*needs), progress=step).derivation
 
 
 @app.callback()
@@ -146,7 +147,7 @@ def derive(
 
             refuse_special(output)
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state, needs=_needs(format, reactions))
+            derivation = _derive(file, state, needs=(format in CODE_FORMATS, reactions))
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
@@ -171,15 +172,6 @@ def derive(
                 console.note(f"wrote {path}")
 
 
-def _needs(format: str, reactions: bool) -> str:
-    """What ``derive`` reads of the derivation (gacli.pipeline): reactions need the closed forms."""
-    from gacli.pipeline import CLOSED, CODE, PRINTOUT
-
-    if reactions:
-        return CLOSED
-    return CODE if format in CODE_FORMATS else PRINTOUT
-
-
 def _text_report(derivation, steps: bool, reactions: bool):
     from gacli.display.report import derivation_report, reactions_report, steps_report
 
@@ -201,7 +193,7 @@ def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
 
     with _boundary():
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state, needs=_needs("text", False))
+            derivation = _derive(file, state, needs=(False, False))
             state("writing the Gibbs function")
             sections = tuple(gibbs_report(derivation))
         console.sections("", sections)

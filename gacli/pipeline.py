@@ -49,6 +49,11 @@ CODE = "code"  # q̇, M and F as generated code computes them
 PRINTOUT = "printout"  # q̇, M and F as derive, gibbs and LaTeX print them, with the count of the rows
 
 
+def needs_of(code: bool, reactions: bool) -> str:
+    """What ``derive`` reads: generated code or a printout, unless reactions ask for the closed forms."""
+    return CLOSED if reactions else CODE if code else PRINTOUT
+
+
 def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None] | None = None,
         loaded: Callable[[System], None] | None = None) -> Run:
     """Read, load and derive ``path`` once.
