@@ -5,7 +5,14 @@ Each test names the class of the issue it belongs to.
 
 from __future__ import annotations
 
+import ctypes
 import re
+import subprocess
+
+import numpy as np
+import pytest
+import test_undefined_points as undefined
+from conftest import require_tool
 
 from gacli.check import capped
 from gacli.errors import Diagnostic, Location
@@ -39,3 +46,43 @@ def test_errors_past_the_limit_keep_the_file_failing():
 def test_a_report_within_the_limit_is_left_as_it_is():
     problems = _problems("ewn")
     assert capped(problems, limit=3) == tuple(problems)
+
+
+# -- class 5: the C target's undefined points under -ffast-math ----------------------------------
+
+FAST_MATH = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2", "-ffast-math"]
+
+
+@pytest.fixture(scope="module")
+def undefined_point_c(tmp_path_factory):
+    from gacli.emit import emit_c
+    from gacli.loader.loading import loads
+    from gacli.mechanics.equations import derive
+    directory = tmp_path_factory.mktemp("fast_math")
+    for name, text in emit_c(derive(loads(undefined.SYSTEM, path="undefined_point.yaml"))).items():
+        (directory / name).write_text(text, encoding="utf-8")
+    return directory / "undefined_point.c"
+
+
+@pytest.mark.parametrize("compiler", ["gcc", "clang"])
+def test_c_rhs_reports_undefined_points_when_built_with_fast_math(compiler, undefined_point_c):
+    """-ffast-math lets a compiler fold isfinite(x) to 1; the bit test it replaced must still see NaN and inf."""
+    cc = require_tool(compiler)
+    library = undefined_point_c.with_name(f"libfast_{compiler}.so")
+    result = subprocess.run([cc, *FAST_MATH, "-shared", "-fPIC", str(undefined_point_c), "-o", str(library), "-lm"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0 and not result.stderr, result.stderr
+    rhs = ctypes.CDLL(str(library)).undefined_point_rhs
+    doubles = ctypes.POINTER(ctypes.c_double)
+    rhs.argtypes = [ctypes.c_double, doubles, doubles, doubles, doubles]
+    rhs.restype = ctypes.c_int
+    for case in undefined.CASES:
+        x, p = (np.ascontiguousarray(v, dtype=float) for v in undefined.point(case))
+        xdot = np.zeros(2)
+        status = rhs(0.0, *(a.ctypes.data_as(doubles) for a in (x, p)), None, xdot.ctypes.data_as(doubles))
+        if case is None:
+            assert status == 0
+            np.testing.assert_allclose(xdot, undefined.expected_rhs(), rtol=1e-12)
+        else:
+            assert status == (1 if case.startswith("mass") else -1), case
+            assert np.isnan(xdot).all(), case
