@@ -8,6 +8,7 @@ from __future__ import annotations
 import ctypes
 import re
 import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -86,3 +87,45 @@ def test_c_rhs_reports_undefined_points_when_built_with_fast_math(compiler, unde
         else:
             assert status == (1 if case.startswith("mass") else -1), case
             assert np.isnan(xdot).all(), case
+
+
+# -- class 6: the wheelchair's constraint forces in closed form, within the budget ---------------
+
+WHEELCHAIR = Path(__file__).resolve().parents[1] / "benchmarks" / "corpus" / "wheelchair.yaml"
+
+
+def test_wheelchair_reactions_in_c_finish_and_agree_with_the_fundamental_equation(tmp_path, rng):
+    """Seven multipliers with u̇ = M⁻¹F put in: put in over the graph, not by xreplace (which took > 120 s).
+
+    The generated λ is compared with the 30-digit solve of eq. (14.10) over all rates (verify's route).
+    """
+    from gacli.algebra import symbols as S
+    from gacli.emit import emit_c
+    from gacli.emit.naming import layout
+    from gacli.loader.loading import load
+    from gacli.mechanics.equations import derive
+    from gacli.reactions import multipliers_numeric
+
+    d = derive(load(WHEELCHAIR))
+    for name, text in emit_c(d, reactions=True).items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    library = tmp_path / "libwheelchair.so"
+    subprocess.run([require_tool("gcc"), *FAST_MATH[:5], "-shared", "-fPIC", str(tmp_path / "wheelchair.c"),
+                    "-o", str(library), "-lm"], check=True)
+    c = ctypes.CDLL(str(library))
+    doubles = ctypes.POINTER(ctypes.c_double)
+    for function in (c.wheelchair_rhs, c.wheelchair_reactions):
+        function.argtypes = [ctypes.c_double, doubles, doubles, doubles, doubles]
+    lay = layout(d)
+    coordinates = [c_.name for c_ in d.system.coordinates]
+    m = len(d.system.constraints)
+    for _ in range(3):
+        x, p, r = (np.ascontiguousarray(rng.uniform(0.3, 1.2, len(v))) for v in (lay.state, lay.parameters, lay.r))
+        xdot, lam = np.zeros(len(x)), np.zeros(m)
+        pointers = [a.ctypes.data_as(doubles) for a in (x, p, r)]
+        assert c.wheelchair_rhs(0.0, *pointers, xdot.ctypes.data_as(doubles)) == 0
+        c.wheelchair_reactions(0.0, *pointers, lam.ctypes.data_as(doubles))
+        values = dict(zip(lay.state_symbols + lay.parameter_symbols + lay.r_symbols, [*x, *p, *r]))
+        values.update({S.rate(n): v for n, v in zip(coordinates, xdot[:len(coordinates)])})
+        _, expected = multipliers_numeric(d.system, values)
+        np.testing.assert_allclose(lam, expected[:m], rtol=1e-8, atol=1e-8)
