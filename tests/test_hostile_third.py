@@ -6,7 +6,9 @@ Each test names the class of the issue it belongs to.
 from __future__ import annotations
 
 import ctypes
+import os
 import re
+import stat
 import subprocess
 from pathlib import Path
 
@@ -129,3 +131,60 @@ def test_wheelchair_reactions_in_c_finish_and_agree_with_the_fundamental_equatio
         values.update({S.rate(n): v for n, v in zip(coordinates, xdot[:len(coordinates)])})
         _, expected = multipliers_numeric(d.system, values)
         np.testing.assert_allclose(lam, expected[:m], rtol=1e-8, atol=1e-8)
+
+
+# -- class 2: an output name that is a link -------------------------------------------------------
+
+def _outside(tmp_path: Path) -> Path:
+    """A file outside the output folder, executable, that a link in it leads to."""
+    outside = tmp_path / "elsewhere" / "tool"
+    outside.parent.mkdir()
+    outside.write_text("secret\n", encoding="utf-8")
+    outside.chmod(0o4755)
+    return outside
+
+
+def test_a_link_among_the_outputs_is_replaced_not_written_through(tmp_path):
+    from gacli.output import write_files
+    outside = _outside(tmp_path)
+    folder = tmp_path / "build"
+    folder.mkdir()
+    (folder / "m.h").symlink_to(outside)
+    write_files({"m.c": "c\n", "m.h": "h\n"}, folder)
+    assert outside.read_text(encoding="utf-8") == "secret\n"
+    assert stat.S_IMODE(outside.stat().st_mode) == 0o4755
+    header = folder / "m.h"
+    assert not header.is_symlink() and header.read_text(encoding="utf-8") == "h\n"
+    assert stat.S_IMODE(header.stat().st_mode) & 0o7111 == 0  # neither the target's x bits nor set-id
+
+
+def test_a_failed_write_puts_a_link_back_as_it_was(tmp_path, monkeypatch):
+    import gacli.output as output
+    outside = _outside(tmp_path)
+    folder = tmp_path / "build"
+    folder.mkdir()
+    (folder / "m.c").symlink_to(outside)
+    (folder / "m.h").symlink_to(tmp_path / "nowhere")  # dangling
+    real_replace = os.replace
+
+    def failing(source, target):
+        if str(target).endswith("m.h"):
+            raise OSError(28, "No space left on device")
+        return real_replace(source, target)
+
+    monkeypatch.setattr(output.os, "replace", failing)
+    with pytest.raises(output.OutputError, match="no file was changed"):
+        output.write_files({"m.c": "c\n", "m.h": "h\n"}, folder)
+    assert os.readlink(folder / "m.c") == str(outside)
+    assert os.readlink(folder / "m.h") == str(tmp_path / "nowhere")
+    assert sorted(p.name for p in folder.iterdir()) == ["m.c", "m.h"]
+    assert outside.read_text(encoding="utf-8") == "secret\n"
+
+
+def test_a_setuid_output_does_not_pass_its_bit_to_the_new_file(tmp_path):
+    from gacli.output import write_files
+    target = tmp_path / "m.py"
+    target.write_text("old\n", encoding="utf-8")
+    target.chmod(0o4750)
+    write_files({"m.py": "new\n"}, target)
+    assert stat.S_IMODE(target.stat().st_mode) == 0o750
