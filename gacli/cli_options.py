@@ -4,8 +4,13 @@ parser) and how ``linearize`` shows its result; a usage error in an option strin
 from __future__ import annotations
 
 import contextlib
+import math
 
 import typer
+
+# verify's states: each is a 30-digit solve of eq. (14.10), a second or more for a large system, so
+# more than this would only run into the time budget; a count like 10**9 is a typo, said at once.
+MAX_SAMPLES = 10_000
 
 
 def numeric_lines(L, derivation, pairs, overrides, names) -> list[str]:
@@ -37,6 +42,23 @@ def usage_errors():
         console.error(problems[0] if len(problems) == 1 else str(exc).split("\n", 1)[0],
                       problems if len(problems) > 1 else ())
         raise typer.Exit(code=2) from None
+
+
+def verify_options(samples: int, tol: float) -> None:
+    """verify's numbers, refused before any work (an OptionError: exit 2 under :func:`usage_errors`).
+
+    With a tolerance of NaN or below 0 every comparison fails (the report
+    read "relative difference 0 > nan"), which says nothing of the file.
+    """
+    from gacli.simulate.spec import OptionError
+
+    problems = []
+    if samples > MAX_SAMPLES:
+        problems.append(f"--samples: at most {MAX_SAMPLES:,} states, found {samples:,}")
+    if not (math.isfinite(tol) and tol >= 0):
+        problems.append(f"--tol: expected a finite number >= 0, found {tol}")
+    if problems:
+        raise OptionError(problems)
 
 
 def check_outputs(csv, plot) -> None:

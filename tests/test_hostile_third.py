@@ -188,3 +188,60 @@ def test_a_setuid_output_does_not_pass_its_bit_to_the_new_file(tmp_path):
     target.chmod(0o4750)
     write_files({"m.py": "new\n"}, target)
     assert stat.S_IMODE(target.stat().st_mode) == 0o750
+
+
+# -- class 4: option strings ---------------------------------------------------------------------
+
+CYLINDER = Path(__file__).resolve().parents[1] / "systems" / "cylinder_in_cylinder.yaml"
+
+
+def _gacli(*args: str):
+    from typer.testing import CliRunner
+
+    from gacli.cli import app
+    return CliRunner().invoke(app, [*args])
+
+
+@pytest.mark.parametrize("command, option, text", [
+    (["linearize"], "--at", "theta=1,,phi=0"),
+    (["linearize"], "--at", "theta=1,,"),
+    (["linearize"], "--states", "theta, ,phi"),
+    (["linearize"], "--set", ",M=1"),
+    (["simulate", "--t-end", "0.01"], "--init", "theta=1,,"),
+    (["simulate", "--t-end", "0.01"], "--show", "theta,,phi"),
+])
+def test_an_empty_item_in_an_option_string_is_a_usage_error(command, option, text):
+    result = _gacli(command[0], str(CYLINDER), *command[1:], option, text)
+    assert result.exit_code == 2, result.output
+    assert f"{option} '{text}': empty item at column" in result.output
+    assert "Traceback" not in result.output
+
+
+@pytest.mark.parametrize("seconds", ["1e400", "inf", "1e12"])
+def test_a_timeout_past_what_a_timer_holds_is_no_limit_not_a_traceback(seconds):
+    for command in (["derive"], ["check"]):
+        result = _gacli(*command, str(CYLINDER), "--timeout", seconds)
+        assert result.exit_code == 0, result.output
+        assert "Traceback" not in result.output and result.exception is None
+
+
+@pytest.mark.parametrize("samples, tol, message", [
+    (10**9, 1e-9, "--samples: at most 10,000 states, found 1,000,000,000"),
+    (5, float("nan"), "--tol: expected a finite number >= 0, found nan"),
+    (5, -1.0, "--tol: expected a finite number >= 0, found -1.0"),
+    (5, float("inf"), "--tol: expected a finite number >= 0, found inf"),
+])
+def test_verify_refuses_its_numbers_before_any_work(samples, tol, message, capsys):
+    import typer
+
+    from gacli.cli_options import usage_errors, verify_options
+    with pytest.raises(typer.Exit) as caught, usage_errors():
+        verify_options(samples, tol)
+    assert caught.value.exit_code == 2
+    assert message in capsys.readouterr().err
+
+
+def test_verify_accepts_ordinary_numbers():
+    from gacli.cli_options import verify_options
+    verify_options(20, 1e-9)
+    verify_options(10_000, 0.0)
