@@ -245,3 +245,49 @@ def test_verify_accepts_ordinary_numbers():
     from gacli.cli_options import verify_options
     verify_options(20, 1e-9)
     verify_options(10_000, 0.0)
+
+
+# -- class 1: links in the checked tree ----------------------------------------------------------
+
+_STDERR_LINE = re.compile(r"^[^\n]+:\d+:\d+: (error|warning|note): ")
+
+
+@pytest.fixture
+def linked_tree(tmp_path, monkeypatch):
+    """models/ with a good file, a dangling link, a link out, a loop and a linked directory out."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "outside").mkdir()
+    (tmp_path / "outside" / "s.yaml").write_text("gacli: 1\nsecret: TOPSECRET\n", encoding="utf-8")
+    models = tmp_path / "models"
+    (models / "sub").mkdir(parents=True)
+    (models / "good.yaml").write_text(CYLINDER.read_text(encoding="utf-8"), encoding="utf-8")
+    (models / "dangling.yaml").symlink_to("nowhere.yaml")
+    (models / "out.yaml").symlink_to("../outside/s.yaml")
+    (models / "loop_a.yaml").symlink_to("loop_b.yaml")
+    (models / "loop_b.yaml").symlink_to("loop_a.yaml")
+    (models / "sub" / "linked").symlink_to("../../outside")
+    return models
+
+
+@pytest.mark.parametrize("fmt", ["text", "json", "github"])
+def test_a_dangling_link_in_a_folder_is_skipped_and_said_so(linked_tree, fmt):
+    result = _gacli("check", "--format", fmt, "models")
+    assert result.exit_code == 0, result.output
+    assert "TOPSECRET" not in result.output and "No such file" not in result.output
+    if fmt == "json":
+        import json
+        assert {"path": "models/dangling.yaml", "reason": "a symbolic link to a file that does not exist; not followed"} \
+            in json.loads(result.stdout)["skipped"]
+    else:
+        assert "a dangling link: 1" in result.output
+    if fmt == "text":
+        lines = result.stderr.splitlines()
+        assert lines and all(_STDERR_LINE.match(line) for line in lines), lines
+        assert "models/dangling.yaml:1:1: note: skipped, a symbolic link to a file that does not exist" \
+            in result.stderr
+
+
+def test_a_dangling_link_named_is_an_error_that_says_what_it_is(linked_tree):
+    result = _gacli("check", "models/dangling.yaml")
+    assert result.exit_code == 1
+    assert "models/dangling.yaml:1:1: error: a symbolic link to a file that does not exist" in result.stderr

@@ -105,7 +105,8 @@ class Skipped:
 
 
 _KINDS = (("not a gacli file", "not a gacli file"), ("a symbolic link that leads out", "a link out of its folder"),
-          ("a symbolic link loop", "a link loop"), ("not a regular file", "not a regular file"))
+          ("a symbolic link loop", "a link loop"), ("a symbolic link to a file that does not", "a dangling link"),
+          ("not a regular file", "not a regular file"))
 
 
 @dataclass(frozen=True)
