@@ -291,3 +291,39 @@ def test_a_dangling_link_named_is_an_error_that_says_what_it_is(linked_tree):
     result = _gacli("check", "models/dangling.yaml")
     assert result.exit_code == 1
     assert "models/dangling.yaml:1:1: error: a symbolic link to a file that does not exist" in result.stderr
+
+
+# -- class 6: integrals of many coordinates, block by block ----------------------------------------
+
+def test_det_and_adjugate_by_blocks_agree_with_the_whole_matrix():
+    import sympy as sp
+
+    from gacli.steady.integrals import _blocks, _det_and_adjugate_times
+    a, b, c, d, e, q = sp.symbols("a b c d e q")
+    # Blocks {0, 2}, {1}, {3, 4} interleaved: the pattern, not the order, makes them.
+    M = sp.Matrix([[a, 0, sp.cos(q), 0, 0],
+                   [0, b, 0, 0, 0],
+                   [sp.cos(q), 0, c, 0, 0],
+                   [0, 0, 0, d, 1],
+                   [0, 0, 0, 1, e]])
+    F = sp.Matrix(sp.symbols("f0:5"))
+    assert _blocks(M) == [[0, 2], [1], [3, 4]]
+    det, adj_F = _det_and_adjugate_times(M, F)
+    assert sp.expand(det - M.det()) == 0
+    assert all(sp.expand(x - y) == 0 for x, y in zip(adj_F, M.adjugate() * F))
+
+
+def test_integrals_of_a_chain_of_sixty_particles_prove_the_energy():
+    """SymPy's adjugate of the 60 x 60 identity took 3,600 cofactors of size 59: it did not end in 40 s."""
+    from gacli.loader.loading import loads
+    from gacli.mechanics.equations import derive
+    from gacli.steady.integrals import integrals
+
+    n = 60
+    bodies = "\n".join(f"  b{i}: {{mass: 1, position: [q{i}, 0, 0]}}" for i in range(n))
+    potential = " + ".join(f"(q{i + 1} - q{i})**2/2" for i in range(n - 1))
+    text = (f"gacli: 1\nname: h3_chain\ncoordinates: [{', '.join(f'q{i}' for i in range(n))}]\n"
+            f"bodies:\n{bodies}\npotential: {potential}\n")
+    found = integrals(derive(loads(text, path="h3_chain.yaml")))
+    energy = next(i for i in found.found if i.name == "energy T + V")
+    assert energy.conserved is True
