@@ -327,3 +327,19 @@ def test_integrals_of_a_chain_of_sixty_particles_prove_the_energy():
     found = integrals(derive(loads(text, path="h3_chain.yaml")))
     energy = next(i for i in found.found if i.name == "energy T + V")
     assert energy.conserved is True
+
+
+def test_a_recursion_error_in_sympy_is_one_located_message():
+    """steady on a thousand loads with sin(i*y): SymPy's polys recurse once per generator."""
+    from gacli.budget import budget
+    from gacli.errors import SystemFileError
+
+    def deep(n):
+        return deep(n + 1)
+
+    with pytest.raises(SystemFileError) as caught, budget("m.yaml", 0) as state:
+        state("solving for the steady motions")
+        deep(0)
+    (problem,) = caught.value.diagnostics
+    assert str(problem) == ("m.yaml:1:1: error: the expressions are too deeply nested for SymPy in the step "
+                            "'solving for the steady motions' (Python's recursion limit)")
