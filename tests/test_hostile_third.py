@@ -11,9 +11,11 @@ import re
 import stat
 import subprocess
 from pathlib import Path
+from typing import Optional
 
 import numpy as np
 import pytest
+import typer
 import test_undefined_points as undefined
 from conftest import require_tool
 
@@ -343,3 +345,54 @@ def test_a_recursion_error_in_sympy_is_one_located_message():
     (problem,) = caught.value.diagnostics
     assert str(problem) == ("m.yaml:1:1: error: the expressions are too deeply nested for SymPy in the step "
                             "'solving for the steady motions' (Python's recursion limit)")
+
+
+# -- class 4: a one-value option given twice ----------------------------------------------------------
+
+def _strict_app():
+    """A small app on the mixin, as gacli's Group is to use it (gacli.cli_options.StrictOptions)."""
+    from typer.core import TyperGroup
+
+    from gacli.cli_options import StrictOptions
+
+    class Group(StrictOptions, TyperGroup):
+        pass
+
+    app = typer.Typer(cls=Group)
+
+    @app.command()
+    def linearize(file: str, at: Optional[str] = None, output: Optional[str] = typer.Option(None, "--output", "-o"),
+                  symbolic: bool = False, set_: list[str] = typer.Option([], "--set")) -> None:
+        print(f"at={at} output={output}")
+
+    @app.command()
+    def other() -> None:
+        pass
+
+    return app
+
+
+@pytest.mark.parametrize("args", [
+    ["--at", "x=1", "--at", "x=2"],
+    ["--at=x=1", "--at", "x=2"],
+    ["-o", "a", "--output", "b"],
+    ["-oa", "-o", "b"],
+])
+def test_a_one_value_option_given_twice_is_a_usage_error(args):
+    from typer.testing import CliRunner
+    result = CliRunner().invoke(_strict_app(), ["linearize", "f.yaml", *args])
+    assert result.exit_code == 2, result.output
+    assert "given more than once" in result.output
+
+
+@pytest.mark.parametrize("args", [
+    ["--at", "x=1"],
+    ["--set", "a=1", "--set", "b=2"],          # an option that collects
+    ["--symbolic", "--symbolic"],               # a flag
+    ["--at", "--output", "-o", "b"],            # a value that looks like an option is a value
+    ["--at", "x=1", "--", "--at"],
+])
+def test_options_given_once_or_collected_pass(args):
+    from typer.testing import CliRunner
+    result = CliRunner().invoke(_strict_app(), ["linearize", "f.yaml", *args])
+    assert "given more than once" not in result.output
