@@ -69,6 +69,12 @@ def budget(path: str, seconds: float | None) -> Iterator[Budget]:
     except MemoryError as exc:
         forget_frames(exc)
         raise state.error(f"ran out of memory in the step '{state.step}'") from None
+    except RecursionError as exc:
+        # SymPy's polynomial code recurses once per generator: a sum of a thousand loads with
+        # sin(i*y) in each is a polynomial in a thousand generators, past Python's stack.
+        forget_frames(exc)
+        raise state.error(f"the expressions are too deeply nested for SymPy in the step '{state.step}' "
+                          "(Python's recursion limit)") from None
     except Exception as exc:
         if state.expired:
             forget_frames(exc)

@@ -4,8 +4,13 @@ parser) and how ``linearize`` shows its result; a usage error in an option strin
 from __future__ import annotations
 
 import contextlib
+import math
 
 import typer
+
+# verify's states: each is a 30-digit solve of eq. (14.10), a second or more for a large system, so
+# more than this would only run into the time budget; a count like 10**9 is a typo, said at once.
+MAX_SAMPLES = 10_000
 
 
 def numeric_lines(L, derivation, pairs, overrides, names) -> list[str]:
@@ -39,6 +44,23 @@ def usage_errors():
         raise typer.Exit(code=2) from None
 
 
+def verify_options(samples: int, tol: float) -> None:
+    """verify's numbers, refused before any work (an OptionError: exit 2 under :func:`usage_errors`).
+
+    With a tolerance of NaN or below 0 every comparison fails (the report
+    read "relative difference 0 > nan"), which says nothing of the file.
+    """
+    from gacli.simulate.spec import OptionError
+
+    problems = []
+    if samples > MAX_SAMPLES:
+        problems.append(f"--samples: at most {MAX_SAMPLES:,} states, found {samples:,}")
+    if not (math.isfinite(tol) and tol >= 0):
+        problems.append(f"--tol: expected a finite number >= 0, found {tol}")
+    if problems:
+        raise OptionError(problems)
+
+
 def check_outputs(csv, plot) -> None:
     """Refused before any work: a plot that is not .png or .svg, an output that is a device or FIFO."""
     if plot is not None:
@@ -65,3 +87,50 @@ def write_outputs(result, spec, csv, plot, units=None) -> None:
 
         with console.notes_from_warnings():  # Matplotlib's warnings too
             console.wrote(draw(result, plot, spec.show, spec.phase, units))
+
+
+# -- an option of one value given twice -------------------------------------------------------------
+
+def repeated_options(command, args) -> list[str]:
+    """The options of ``command`` that take one value and appear more than once in ``args``.
+
+    Click keeps the last (``linearize --at x=1 --at x=2`` used x=2 without a word); a
+    mature CLI says so. Options that collect (``multiple``) and flags are left alone.
+    """
+    single = {}
+    for param in command.params:
+        # By duck type: typer vendors its own click (typer._click), whose classes are not click's.
+        if getattr(param, "param_type_name", "") == "option" and not param.multiple and not param.count:
+            for name in (*param.opts, *param.secondary_opts):
+                single[name] = param
+    seen: dict[str, int] = {}
+    tokens = iter(args)
+    for token in tokens:
+        if token == "--":
+            break
+        name, equals, _ = token.partition("=")
+        param = single.get(name if token.startswith("--") else token[:2] if token.startswith("-") else "")
+        if param is None:
+            continue
+        if not param.is_flag:
+            seen[param.name] = seen.get(param.name, 0) + 1
+            if not equals and not (len(token) > 2 and not token.startswith("--")):
+                next(tokens, None)  # its value, which may look like an option
+    return [f"{_shown_name(command, name)}" for name, count in seen.items() if count > 1]
+
+
+def _shown_name(command, name: str) -> str:
+    param = next(p for p in command.params if p.name == name)
+    return max(param.opts, key=len)
+
+
+class StrictOptions:
+    """A mixin for the TyperGroup (``class Group(StrictOptions, _ExampleLast, TyperGroup)``):
+    a one-value option given twice is a usage error (exit 2), not the last one silently."""
+
+    def resolve_command(self, ctx, args):
+        name, command, rest = super().resolve_command(ctx, args)
+        repeated = repeated_options(command, rest) if command is not None else []
+        if repeated:  # ctx.fail: the UsageError of whichever click typer runs on (exit 2)
+            ctx.fail(f"{', '.join(repeated)} given more than once (the option takes one value; give it once)")
+        return name, command, rest

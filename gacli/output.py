@@ -163,14 +163,15 @@ def _write(temporary: Path, text: Text, mode: int) -> None:
 
 def _backup(target: Path) -> Path | None:
     """A second name for the file about to be replaced (a hard link; a copy where links fail)."""
-    if not target.exists():
+    if not os.path.lexists(target):  # a dangling link is put back on failure too
         return None
     backup = _temporary(target)
     os.unlink(backup)
     try:
-        os.link(target, backup)
+        os.link(target, backup, follow_symlinks=False)
     except OSError:
-        shutil.copy2(target, backup)
+        # A copy of the link, never of what it leads to: that is outside the output path.
+        shutil.copy2(target, backup, follow_symlinks=False)
     return backup
 
 
@@ -219,8 +220,16 @@ def atomic_path(path: Path):
 
 
 def _mode_for(path: Path) -> int:
-    if path.exists():
-        return path.stat().st_mode & 0o7777
+    """The replaced file's permissions, else a new file's; never a link target's, nor set-id bits.
+
+    The output replaces a link rather than writing through it (nothing outside
+    the output path is written), so the mode of whatever the link led to,
+    perhaps an executable elsewhere, is no business of the new file.
+    """
+    with contextlib.suppress(OSError):
+        mode = os.lstat(path).st_mode
+        if stat.S_ISREG(mode):
+            return mode & 0o777
     umask = os.umask(0)
     os.umask(umask)
     return 0o666 & ~umask

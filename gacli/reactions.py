@@ -105,7 +105,8 @@ def constraint_forces(derivation, *, solved: bool = True, simplify: bool = True)
     lam = lam[:fundamental.constraint_count, :]
     if solved and lam.rows:
         udot = sp.Matrix(derivation.mass_matrix).LUsolve(sp.Matrix(derivation.forcing))
-        lam = lam.xreplace(dict(zip(derivation.speed_rates, udot)))
+        # Over the graph: λ's entries share their subexpressions, which xreplace rebuilds at every occurrence.
+        lam = sp.Matrix(lam.rows, 1, substitute(list(lam), dict(zip(derivation.speed_rates, udot))))
     if simplify:
         lam = lam.applyfunc(solved_tidy)
     return sp.ImmutableMatrix(lam)

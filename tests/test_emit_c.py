@@ -148,7 +148,7 @@ def test_source_uses_only_math_h_and_no_globals(name):
     assert not re.search(r"\b(malloc|calloc|free|M_PI|M_E)\b", source)
     top_level = [line for line in source.splitlines() if line and not line[0].isspace()]
     allowed = ("/*", "#include", "{", "}", f"void {name}_", f"int {name}_", f"static int {name}_cholesky_solve(",
-               f"static int {name}_solved(")
+               f"static int {name}_solved(", f"static int {name}_finite(", f"static double {name}_nan(")
     assert all(line.startswith(allowed) for line in top_level), top_level
 
 

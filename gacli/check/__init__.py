@@ -19,7 +19,7 @@ from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.check.declarations import unused_declarations
 from gacli.check.paths import SUFFIXES, Found, expand_paths, find
 from gacli.check.report import (
-    JSON_VERSION, CheckReport, FileReport, MassMatrixCheck, PathsError, Skipped, to_github, to_json,
+    JSON_VERSION, CheckReport, capped, FileReport, MassMatrixCheck, PathsError, Skipped, to_github, to_json,
 )
 from gacli.check.run import (
     DEFAULT_TIMEOUT,
@@ -32,7 +32,7 @@ from gacli.check.run import (
 )
 
 __all__ = [
-    "DEFAULT_TIMEOUT", "JSON_VERSION", "MAX_DIAGNOSTICS", "STEP_CLASSIFY", "STEP_LOAD", "STEP_MASS", "STEP_READ",
+    "DEFAULT_TIMEOUT", "JSON_VERSION", "capped", "MAX_DIAGNOSTICS", "STEP_CLASSIFY", "STEP_LOAD", "STEP_MASS", "STEP_READ",
     "STEP_VERIFY", "SUFFIXES", "CheckReport", "FileReport", "Found", "MassMatrixCheck", "PathsError", "Skipped",
     "check_file", "check_paths", "expand_paths", "find", "to_github", "to_json", "unused_declarations",
 ]

@@ -26,7 +26,8 @@ def show(report: CheckReport) -> None:
         console.diagnostics(file.diagnostics)  # escapes and shortens what the file wrote
     for skipped in report.skipped:
         if skipped.kind != "not a gacli file":  # a link a pull request added is worth a line of its own
-            console.note(f"{skipped.path}: note: skipped, {skipped.reason}")
+            # Located as a problem of the whole file is (1:1), so that every stderr line parses alike.
+            console.note(f"{skipped.path}:1:1: note: skipped, {skipped.reason}")
     out = console.stdout()
     out.print(_table(report, out.width), soft_wrap=False)  # a table is laid out to the width, not run on
     out.print(_summary(report))

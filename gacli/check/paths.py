@@ -36,6 +36,7 @@ _SNIFF_BYTES = 65_536
 
 LEAVES = "a symbolic link that leads out of {boundary}; not followed"
 LOOPS = "a symbolic link loop; not followed"
+DANGLING = "a symbolic link to a file that does not exist; not followed"
 NOT_GACLI = "not a gacli file (no top-level 'gacli:' key)"
 NOT_REGULAR = "not a regular file (a device, socket or pipe); not read"
 
@@ -150,6 +151,9 @@ def _refusal(path: Path, boundary: Path) -> str | None:
     except OSError as exc:
         if exc.errno == errno.ELOOP:
             return LOOPS
+        if exc.errno == errno.ENOENT and path.is_symlink():
+            # Not "no such file": the name is there, what it points to is not.
+            return DANGLING
         return None  # missing or unreadable: check_file says so, located
     try:
         if not stat.S_ISREG(real.stat().st_mode):

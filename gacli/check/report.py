@@ -14,6 +14,27 @@ from gacli.errors import Diagnostic
 from gacli.read.textsafe import printable, shortened
 
 JSON_VERSION = 1
+MAX_DIAGNOSTICS = 100  # per file; a file can hold thousands of errors (aliases)
+_RANK = {"error": 0, "warning": 1, "note": 2}
+
+
+def capped(diagnostics, limit: int = MAX_DIAGNOSTICS) -> tuple[Diagnostic, ...]:
+    """The first ``limit`` problems in order, then one located line for the rest.
+
+    The line stands at the first problem left out and carries the most severe
+    severity among them, so a CI parser that wants every line located reads
+    it, and a file whose errors all fall past the limit still fails; its text
+    counts the rest by severity (docs/check.md, "Output and exit codes").
+    """
+    diagnostics = tuple(diagnostics)
+    if len(diagnostics) <= limit:
+        return diagnostics
+    rest = diagnostics[limit:]
+    worst = min((d.severity for d in rest), key=lambda s: _RANK.get(s, 0))
+    counts = ", ".join(f"{n} {s}{'s' if n != 1 else ''}" for s in ("error", "warning", "note")
+                       if (n := sum(d.severity == s for d in rest)))
+    summary = Diagnostic(rest[0].location, f"{len(rest)} more problems not shown ({counts})", severity=worst)
+    return diagnostics[:limit] + (summary,)
 
 
 class PathsError(ValueError):
@@ -84,7 +105,8 @@ class Skipped:
 
 
 _KINDS = (("not a gacli file", "not a gacli file"), ("a symbolic link that leads out", "a link out of its folder"),
-          ("a symbolic link loop", "a link loop"), ("not a regular file", "not a regular file"))
+          ("a symbolic link loop", "a link loop"), ("a symbolic link to a file that does not", "a dangling link"),
+          ("not a regular file", "not a regular file"))
 
 
 @dataclass(frozen=True)

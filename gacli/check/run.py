@@ -28,7 +28,7 @@ from gacli.check.declarations import unused_declarations
 from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
 from gacli.check.paths import find
-from gacli.check.report import CheckReport, FileReport, MassMatrixCheck
+from gacli.check.report import MAX_DIAGNOSTICS, CheckReport, FileReport, MassMatrixCheck, capped
 from gacli.pipeline import run as run_pipeline
 from gacli.errors import (
     DerivationError,
@@ -40,7 +40,6 @@ from gacli.errors import (
 from gacli.display.report import dependent_rows
 from gacli.numeric.zero import time_limit
 
-MAX_DIAGNOSTICS = 100  # per file; a file can hold thousands of errors (aliases)
 
 STEP_CLASSIFY = "classifying constraints and quasi-coordinates (Frobenius)"
 STEP_MASS = "checking M (symmetric, positive definite)"
@@ -162,12 +161,7 @@ def _tidy(diagnostics: list[Diagnostic], path: str) -> tuple[Diagnostic, ...]:
     """Locate file-level problems at 1:1, sort by place, and cap the count."""
     located = [d if d.location.line > 0 else replace(d, location=Location(d.location.path or path, 1, 1))
                for d in diagnostics]
-    ordered = sorted(located, key=lambda d: (d.location, d.severity != "error"))
-    if len(ordered) <= MAX_DIAGNOSTICS:
-        return tuple(ordered)
-    rest = len(ordered) - MAX_DIAGNOSTICS
-    more = Diagnostic(ordered[MAX_DIAGNOSTICS].location, f"{rest} more problems not shown")
-    return tuple(ordered[:MAX_DIAGNOSTICS]) + (more,)
+    return capped(sorted(located, key=lambda d: (d.location, d.severity != "error")))
 
 
 # -- the time budget -----------------------------------------------------------

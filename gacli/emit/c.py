@@ -29,7 +29,7 @@ from string import Template
 import sympy as sp
 
 from gacli.emit.assembly import Assembly, assemble, live_block, reaction_equations, reaction_solve
-from gacli.emit.c_solvers import LU_SOLVE
+from gacli.emit.c_solvers import LU_SOLVE, SOLVERS
 from gacli.emit.defaults import defaults, missing
 from gacli.emit.naming import Entry, Layout, header_lines, layout
 from gacli.emit.printers import GacliCPrinter, print_block
@@ -91,85 +91,7 @@ $comment
 #include <math.h>
 
 #include "$name.h"
-
-/* Solve M u = F in place for symmetric positive definite M (NU*NU,
-   row-major), reading only its lower triangle: M = L L^T with L stored
-   over that triangle, and F becomes u. Returns 0, or j + 1 when pivot j
-   is not positive (or not a number). */
-static int ${name}_cholesky_solve(double *M, double *F)
-{
-    const int k = ${prefix}_NU;
-    int i, j, s;
-    for (j = 0; j < k; ++j) {
-        double d = M[j*k + j];
-        for (s = 0; s < j; ++s) {
-            d -= M[j*k + s]*M[j*k + s];
-        }
-        if (!(d > 0.0)) {
-            return j + 1;
-        }
-        d = sqrt(d);
-        M[j*k + j] = d;
-        for (i = j + 1; i < k; ++i) {
-            double v = M[i*k + j];
-            for (s = 0; s < j; ++s) {
-                v -= M[i*k + s]*M[j*k + s];
-            }
-            M[i*k + j] = v/d;
-        }
-    }
-    for (i = 0; i < k; ++i) {
-        double v = F[i];
-        for (s = 0; s < i; ++s) {
-            v -= M[i*k + s]*F[s];
-        }
-        F[i] = v/M[i*k + i];
-    }
-    for (i = k - 1; i >= 0; --i) {
-        double v = F[i];
-        for (s = i + 1; s < k; ++s) {
-            v -= M[s*k + i]*F[s];
-        }
-        F[i] = v/M[i*k + i];
-    }
-    return 0;
-}
-
-/* The end of rhs: xdot holds q' and F (its last NU entries), M the lower
-   triangle of the mass matrix. Returns what rhs returns: -1 when an entry
-   is not finite, before or after the solve, else the Cholesky solve's. */
-static int ${name}_solved(double *M, double *xdot)
-{
-    const int k = ${prefix}_NU, n = ${prefix}_NX;
-    int i, j, status = 0;
-    for (i = 0; i < n; ++i) {
-        if (!isfinite(xdot[i])) {
-            status = -1;
-        }
-    }
-    for (i = 0; i < k; ++i) {
-        for (j = 0; j <= i; ++j) {
-            if (!isfinite(M[i*k + j])) {
-                status = -1;
-            }
-        }
-    }
-    if (status == 0) {
-        status = ${name}_cholesky_solve(M, xdot + (n - k));
-    }
-    for (i = 0; status == 0 && i < n; ++i) {
-        if (!isfinite(xdot[i])) {
-            status = -1;
-        }
-    }
-    if (status != 0) {
-        for (i = 0; i < n; ++i) {
-            xdot[i] = NAN;
-        }
-    }
-    return status;
-}
-$functions''')
+$solvers$functions''')
 
 FUNCTION = Template('''
 $signature
@@ -200,7 +122,8 @@ def emit_c(derivation: Derivation, *, reactions: bool = False) -> dict[str, str]
                  _rhs(derivation, lay)]
     if reactions:
         functions.append(_reactions(derivation, lay))
-    source = SOURCE.substitute(comment=comment, name=lay.system, prefix=lay.prefix, functions="".join(functions))
+    solvers = SOLVERS.substitute(name=lay.system, prefix=lay.prefix)
+    source = SOURCE.substitute(comment=comment, name=lay.system, solvers=solvers, functions="".join(functions))
     return {f"{lay.system}.h": header, f"{lay.system}.c": source}
 
 
@@ -267,7 +190,7 @@ def _default_parameters(derivation: Derivation, lay: Layout) -> str:
     for row in rows:
         note = row.formula if row.value is not None else (
             f"{row.formula}: not a number" if row.given else "no value in the system file")
-        value = "NAN" if row.value is None else repr(row.value)
+        value = f"{lay.system}_nan()" if row.value is None else repr(row.value)
         lines.append(f"p[{row.entry.macro}] = {value};" + (f" /* {comment_text(note)} */" if note else ""))
     lines.append(f"return {missing(rows)};")
     return FUNCTION.substitute(signature=_defaults_signature(lay), body="\n".join(INDENT + line for line in lines))
@@ -337,7 +260,7 @@ def _reactions(derivation: Derivation, lay: Layout) -> str:
         *_assign("_b", rhs),
         f"if ({lay.function('lu_solve')}({n}, _K, _b) != 0) {{",
         f"{INDENT}for (_i = 0; _i < {solve.count}; ++_i) {{",
-        f"{INDENT * 2}lambda[_i] = NAN;",
+        f"{INDENT * 2}lambda[_i] = {lay.system}_nan();",
         f"{INDENT}}}",
         f"{INDENT}return;",
         "}",

@@ -77,6 +77,9 @@ def _simplified(expr: sp.Expr) -> sp.Expr | None:
         return None
 
 
+MAX_TIMER = 365 * 24 * 3600.0
+
+
 @contextlib.contextmanager
 def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[bool]:
     """Raise ``error()`` inside the block once ``seconds`` have passed; yields whether armed.
@@ -89,9 +92,12 @@ def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[b
     usable = hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
     outer_handler = signal.getsignal(signal.SIGALRM) if usable else None
     outer_left, outer_interval = signal.getitimer(signal.ITIMER_REAL) if usable else (0.0, 0.0)
-    if not usable or not seconds or seconds <= 0 or outer_handler is None or 0 < outer_left <= seconds:
+    if not usable or not seconds or not seconds > 0 or outer_handler is None or 0 < outer_left <= seconds:
         yield False
         return
+    # setitimer overflows (OverflowError) past what time_t in nanoseconds holds: --timeout 1e400 or inf
+    # is a limit no run reaches, so it is a year, which the timer can hold.
+    seconds = min(seconds, MAX_TIMER)
     alarm = _Alarm(error)
     started = time.monotonic()
     unraisable_hook = sys.unraisablehook

@@ -99,11 +99,18 @@ def spec_from_options(*, set: Sequence[str] = (), init: Sequence[str] = (), inpu
 
 
 def split_top_level(text: str, option: str = "") -> list[str]:
-    """Split on the commas outside parentheses; empty pieces are dropped.
+    """Split on the commas outside parentheses; an empty text is no pieces, an empty piece an OptionError.
+
+    ``"a=1,,b=2"`` and ``",a=1"`` are refused rather than read as ``a=1,b=2``
+    (one comma at the end is allowed, as in a Python list):
+    a piece left out by a script that joined a list with an empty entry is
+    a mistake to report, not to guess around (docs/security.md, "Option strings").
 
     >>> split_top_level("a=1, b=atan2(1, 2)")
     ['a=1', 'b=atan2(1, 2)']
     """
+    if not text.strip():
+        return []
     pieces, depth, start = [], 0, 0
     for i, char in enumerate(text):
         depth += {"(": 1, ")": -1}.get(char, 0)
@@ -115,7 +122,14 @@ def split_top_level(text: str, option: str = "") -> list[str]:
     if depth:
         raise OptionError([f"{option} '{text}': unclosed '('".lstrip()])
     pieces.append(text[start:])
-    return [p.strip() for p in pieces if p.strip()]
+    if len(pieces) > 1 and not pieces[-1].strip():
+        pieces.pop()  # one comma at the end, as Python's lists allow
+    empty = [i for i, p in enumerate(pieces) if not p.strip()]
+    if empty:
+        column = sum(len(p) + 1 for p in pieces[:empty[0]]) + 1
+        raise OptionError([f"{option} '{text}': empty item at column {column} (two commas, or one at the start)"
+                           .lstrip()])
+    return [p.strip() for p in pieces]
 
 
 def parse_assignments(text: str, option: str = "") -> list[tuple[str, str]]:

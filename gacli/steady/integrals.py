@@ -158,7 +158,46 @@ def rate_along(derivation: Derivation, G: sp.Expr) -> sp.Expr:
     along_q = sum((sp.diff(G, q) * e for q, e in kinematic.items()), sp.S.Zero)
     grad_u = sp.Matrix([[sp.diff(G, u) for u in speeds]])
     along_q += sp.diff(G, S.T)     # an integral may hold t (Jacobi's, with a support turning steadily)
-    return M.det(method="berkowitz") * along_q + (grad_u * M.adjugate(method="berkowitz") * F)[0, 0]
+    det, adjugate_F = _det_and_adjugate_times(M, F)
+    return det * along_q + sum((g * a for g, a in zip(grad_u, adjugate_F)), sp.S.Zero)
+
+
+def _det_and_adjugate_times(M: sp.Matrix, F: sp.Matrix) -> tuple[sp.Expr, list[sp.Expr]]:
+    """det(M) and adj(M)·F, one diagonal block of M at a time.
+
+    SymPy's adjugate takes k² cofactors of size k − 1 whatever M holds: a chain
+    of 60 particles, M the identity, did not finish in 40 s. M's blocks are
+    the connected parts of its pattern of nonzero entries; for M =
+    diag(B_1, ..., B_n), det M = Π det B_j and adj(M) = diag(adj(B_i) Π_{j≠i} det B_j).
+    """
+    blocks = _blocks(M)
+    dets = [M.extract(b, b).det(method="berkowitz") for b in blocks]
+    out: list[sp.Expr] = [sp.S.Zero] * M.rows
+    for i, block in enumerate(blocks):
+        others = sp.Mul(*(d for j, d in enumerate(dets) if j != i))
+        part = M.extract(block, block).adjugate(method="berkowitz") * F.extract(block, [0])
+        for row, value in zip(block, part):
+            out[row] = others * value
+    return sp.Mul(*dets), out
+
+
+def _blocks(M: sp.Matrix) -> list[list[int]]:
+    """The indices of M's diagonal blocks: connected through nonzero entries (M is symmetric), in order."""
+    parent = list(range(M.rows))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for (i, j), value in M.todok().items():
+        if value != 0:
+            parent[root(i)] = root(j)
+    groups: dict[int, list[int]] = {}
+    for i in range(M.rows):
+        groups.setdefault(root(i), []).append(i)
+    return sorted(groups.values())
 
 
 def _momenta(derivation: Derivation):

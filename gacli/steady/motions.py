@@ -185,8 +185,14 @@ def _tidy(e: sp.Expr) -> sp.Expr:
     if not e.free_symbols:
         return e
     # sin² + cos² folded while it is cheap: fewer spurious factors, so fewer branches to follow.
-    return sp.factor(sp.cancel(sp.trigsimp(e) if sp.count_ops(e) < _TRIGSIMP_OPS else e))
+    try:
+        return sp.factor(sp.cancel(sp.trigsimp(e) if sp.count_ops(e) < _TRIGSIMP_OPS else e))
+    except RecursionError:  # a polynomial in a thousand generators (sin(i*y), one per load): left as it is
+        return e
 
 
 def _readable(e: sp.Expr) -> sp.Expr:
-    return sp.factor(sp.trigsimp(e)) if e.free_symbols else e
+    # As _tidy: trigsimp of a long sum (a thousand loads) runs for minutes, and only tidies.
+    if not e.free_symbols or sp.count_ops(e) >= _TRIGSIMP_OPS:
+        return e
+    return sp.factor(sp.trigsimp(e))

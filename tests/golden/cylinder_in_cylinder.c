@@ -7,6 +7,25 @@
 
 #include "cylinder_in_cylinder.h"
 
+/* 1 when v is a finite number. Read from the IEEE 754 bits (an all-ones
+   exponent is an infinity or a NaN), not by isfinite, so that the check
+   holds under -ffast-math, which lets a compiler assume every value finite. */
+static int cylinder_in_cylinder_finite(double v)
+{
+    union { double d; unsigned long long u; } bits;
+    bits.u = 0;
+    bits.d = v;
+    return (bits.u & 0x7FF0000000000000ULL) != 0x7FF0000000000000ULL;
+}
+
+/* A quiet NaN, built from its bits for the same reason. */
+static double cylinder_in_cylinder_nan(void)
+{
+    union { double d; unsigned long long u; } bits;
+    bits.u = 0x7FF8000000000000ULL;
+    return bits.d;
+}
+
 /* Solve M u = F in place for symmetric positive definite M (NU*NU,
    row-major), reading only its lower triangle: M = L L^T with L stored
    over that triangle, and F becomes u. Returns 0, or j + 1 when pivot j
@@ -58,13 +77,13 @@ static int cylinder_in_cylinder_solved(double *M, double *xdot)
     const int k = CYLINDER_IN_CYLINDER_NU, n = CYLINDER_IN_CYLINDER_NX;
     int i, j, status = 0;
     for (i = 0; i < n; ++i) {
-        if (!isfinite(xdot[i])) {
+        if (!cylinder_in_cylinder_finite(xdot[i])) {
             status = -1;
         }
     }
     for (i = 0; i < k; ++i) {
         for (j = 0; j <= i; ++j) {
-            if (!isfinite(M[i*k + j])) {
+            if (!cylinder_in_cylinder_finite(M[i*k + j])) {
                 status = -1;
             }
         }
@@ -73,13 +92,13 @@ static int cylinder_in_cylinder_solved(double *M, double *xdot)
         status = cylinder_in_cylinder_cholesky_solve(M, xdot + (n - k));
     }
     for (i = 0; status == 0 && i < n; ++i) {
-        if (!isfinite(xdot[i])) {
+        if (!cylinder_in_cylinder_finite(xdot[i])) {
             status = -1;
         }
     }
     if (status != 0) {
         for (i = 0; i < n; ++i) {
-            xdot[i] = NAN;
+            xdot[i] = cylinder_in_cylinder_nan();
         }
     }
     return status;
