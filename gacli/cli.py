@@ -68,10 +68,10 @@ def _boundary():
     except SystemFileError as exc:
         from gacli.display import console
 
-        shown = exc.diagnostics[:MAX_DIAGNOSTICS]
-        console.diagnostics(shown)
-        if len(exc.diagnostics) > len(shown):  # as gacli check's reports: a file of aliases can hold thousands
-            console.error(f"{len(exc.diagnostics) - len(shown)} more problems not shown")
+        from gacli.check.report import capped
+
+        # As gacli check's reports: a file of aliases can hold thousands; the count is located too.
+        console.diagnostics(capped(exc.diagnostics, MAX_DIAGNOSTICS))
         raise typer.Exit(code=1) from None
     except GacliError as exc:
         from gacli.display import console
@@ -374,9 +374,12 @@ def verify(
     from gacli.display import console
 
     with _boundary():
+        from gacli.cli_options import verify_options
         from gacli.verify import format_report
         from gacli.verify import verify as run_verify
 
+        with usage_errors():
+            verify_options(samples, tol)
         with _budget(file, timeout) as state:
             derivation = _derive(file, state)
             state("verifying by the independent route (eq. 14.10)")

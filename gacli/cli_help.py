@@ -17,6 +17,8 @@ from typing import Optional
 import typer
 from typer.core import TyperArgument, TyperCommand, TyperGroup
 
+from gacli.cli_options import StrictOptions
+
 
 class _PlainArgument(TyperArgument):
     """An argument shown by its metavar alone, in the usage line and in the list."""
@@ -44,7 +46,7 @@ class _ExampleLast:
                 formatter.write(" " * formatter.current_indent + self.epilog + "\n")
 
 
-class Group(_ExampleLast, TyperGroup):
+class Group(StrictOptions, _ExampleLast, TyperGroup):
     """``gacli`` itself: its example, too, comes last."""
 
 
