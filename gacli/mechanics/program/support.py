@@ -83,6 +83,8 @@ def _frames(system: System, model: FrameModel) -> str | None:
     # frames are free vectors (docs/frames.md), so the origin enters nothing else the program forms.
     coordinates = [S.value(c.name) for c in system.coordinates]
     for edge in model.edges:
+        if edge.quaternion is not None:
+            return f"frame '{edge.name}' is turned by a quaternion"
         if _timed(edge.angle, system):
             return f"the angle of frame '{edge.name}' depends on time"
         if any(sp.diff(edge.angle, q).free_symbols & set(coordinates) for q in coordinates if edge.angle.has(q)):
