@@ -1,0 +1,111 @@
+"""Frames oriented by a quaternion (docs/frames.md, "Quaternions") against SymPy's KanesMethod.
+
+The references are built here from SymPy's own quaternion orientation
+(``orient_quaternion``) and its quaternion kinematic equations
+(``kinematic_equations(..., 'quaternion')``), not from gacli's formulas; they
+are compared at random unit quaternions, e0 = 0 (a half turn) among them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import sympy as sp
+import sympy.physics.mechanics as me
+
+from conftest import ROOT
+from gacli.algebra import symbols as S
+from gacli.loader.loading import load
+from gacli.mechanics.equations import derive
+from test_frames import close, gacli_accelerations, kane_accelerations
+
+KANE_SET = ROOT / "benchmarks" / "kane_set"
+E = ("e0", "e1", "e2", "e3")
+W = ("w_1", "w_2", "w_3")
+
+
+def kane_body(top: bool):
+    """A rigid body turned by a quaternion, body rates as speeds: fixed at a point l below its centre
+    (a top, moments A, A, C) or free (moments A, B, C, its centre at x, y, z), under gravity."""
+    q = me.dynamicsymbols("e0:4")
+    u = me.dynamicsymbols("w_1:4")
+    m, g, l, A, B, C = sp.symbols("m g l A B C")
+    N = me.ReferenceFrame("N")
+    body = me.ReferenceFrame("body")
+    body.orient_quaternion(N, q)
+    body.set_ang_vel(N, u[0] * body.x + u[1] * body.y + u[2] * body.z)
+    kd = list(me.kinematic_equations(u, q, "quaternion"))
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    if top:
+        G = O.locatenew("G", l * body.z)
+        G.v2pt_theory(O, N, body)
+        inertia, coordinates, speeds = me.inertia(body, A, A, C), list(q), list(u)
+    else:
+        r = me.dynamicsymbols("x y z")
+        v = me.dynamicsymbols("v_x v_y v_z")
+        G = O.locatenew("G", r[0] * N.x + r[1] * N.y + r[2] * N.z)
+        G.set_vel(N, v[0] * N.x + v[1] * N.y + v[2] * N.z)
+        kd += [a.diff() - b for a, b in zip(r, v)]
+        inertia, coordinates, speeds = me.inertia(body, A, B, C), list(r) + list(q), list(v) + list(u)
+    rigid = me.RigidBody("body", G, body, m, (inertia, G))
+    kane = me.KanesMethod(N, q_ind=coordinates, u_ind=speeds, kd_eqs=kd)
+    kane.kanes_equations([rigid], [(G, -m * g * N.z)])
+    return kane, coordinates, speeds, (m, g, l, A, B, C)
+
+
+def unit_quaternion(rng, e0: float) -> np.ndarray:
+    rest = rng.normal(size=3)
+    return np.concatenate([[e0], rest * np.sqrt(1 - e0 * e0) / np.linalg.norm(rest)])
+
+
+def agree(d, kane, coordinates, speeds, constants, rng, e0: float) -> None:
+    numbers = dict(zip("m g l A B C".split(), (1.3, 9.81, 0.4, 0.7, 1.1, 0.5)))
+    values = dict(numbers)
+    values.update(zip(E, unit_quaternion(rng, e0)))
+    values.update({n: rng.normal() for n in ("x", "y", "z")})
+    rates = {n: rng.normal() for n in W + ("x", "y", "z")}
+    values.update({f"dot({n})": v for n, v in rates.items()})
+    point = {s: values[str(s)] for s in constants}
+    point.update({c: values[c.name] for c in coordinates})
+    names = {"v_x": "x", "v_y": "y", "v_z": "z"}
+    point.update({s: rates[names.get(s.name, s.name)] for s in speeds})
+    assert close(gacli_accelerations(d, values), kane_accelerations(kane, point))
+    # The kinematic equations: q̇ of gacli against SymPy's quaternion kinematics solved for q̇.
+    qdot = kane.kindiffdict()
+    for name, rate in d.kinematic_equations:
+        expected = float(me.msubs(qdot[me.dynamicsymbols(name).diff()], point))
+        got = float(rate.xreplace({s: values[s.name] for s in rate.free_symbols}))
+        assert abs(got - expected) <= 1e-10 * max(1.0, abs(expected))
+
+
+@pytest.fixture(scope="module")
+def top():
+    return derive(load(KANE_SET / "quaternion_frame_top.yaml")), kane_body(top=True)
+
+
+@pytest.fixture(scope="module")
+def free_body():
+    return derive(load(KANE_SET / "quaternion_frame_body.yaml")), kane_body(top=False)
+
+
+@pytest.mark.parametrize("e0", [0.8, 0.3, 0.0])
+def test_a_top_in_a_quaternion_frame_against_kane(top, rng, e0):
+    d, (kane, coordinates, speeds, constants) = top
+    for _ in range(3):
+        agree(d, kane, coordinates, speeds, constants, rng, e0)
+
+
+@pytest.mark.parametrize("e0", [0.8, 0.3, 0.0])
+def test_a_free_body_in_a_quaternion_frame_against_kane(free_body, rng, e0):
+    d, (kane, coordinates, speeds, constants) = free_body
+    for _ in range(3):
+        agree(d, kane, coordinates, speeds, constants, rng, e0)
+
+
+def test_the_unit_norm_is_a_holonomic_constraint_and_the_rates_are_quasi_coordinates():
+    system = load(KANE_SET / "quaternion_frame_top.yaml")
+    e = [S.value(n) for n in E]
+    norm, = system.constraints
+    assert sp.expand(norm.relation - (sum(x * x for x in e) - 1)) == 0
+    assert {w.name for w in system.quasi_coordinates if w.differential is not None} == set(W)
