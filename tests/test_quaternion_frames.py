@@ -109,3 +109,17 @@ def test_the_unit_norm_is_a_holonomic_constraint_and_the_rates_are_quasi_coordin
     norm, = system.constraints
     assert sp.expand(norm.relation - (sum(x * x for x in e) - 1)) == 0
     assert {w.name for w in system.quasi_coordinates if w.differential is not None} == set(W)
+
+
+def test_simulate_refuses_a_start_off_the_unit_sphere_and_completes_one_left_open():
+    from typer.testing import CliRunner
+
+    from gacli.cli import app
+
+    path = str(KANE_SET / "quaternion_frame_top.yaml")
+    off = CliRunner().invoke(app, ["simulate", path, "--init", "e0=1,e1=0.5,e2=0,e3=0", "--t-end", "0.1"])
+    assert off.exit_code == 1 and "Traceback" not in off.output
+    assert "unit quaternion of frame top" in off.output and "residual 0.25" in off.output
+    left = CliRunner().invoke(app, ["simulate", path, "--init", "e0=0.6,e2=0,e3=0,dot(w_1)=1", "--t-end", "0.1"])
+    assert left.exit_code == 0, left.output
+    assert "e1 = 0.8" in left.output

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from gacli.read.reader import Reader, describe
+from gacli.read.reader import IDENTIFIER, Reader, describe
 from gacli.read.schema import AXIS_NAMES, FRAME_KEYS, ROLLING_KEYS, FrameDecl, PointDecl, RollingDecl
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 
@@ -71,7 +71,9 @@ def _names(reader: Reader, node: Node, where: str, count: int, what: str) -> tup
         return None
     seen: dict[str, int] = {}
     for i, item in enumerate(node.items):
-        if not reader.name(item, f"{where}[{i}]"):
+        if not isinstance(item, Scalar) or not IDENTIFIER.match(item.text):
+            # A constant or scaled entry would not stay on the unit sphere: only names of the file's own.
+            reader.error(item, f"{where}[{i}]", f"expected a name, found {describe(item)}", f"give {what}")
             return None
         if item.text in seen:
             reader.error(item, f"{where}[{i}]", f"'{item.text}' is named twice (also entry {seen[item.text]})",
