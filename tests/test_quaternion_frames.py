@@ -155,3 +155,42 @@ def test_generated_code_is_regular_at_every_attitude(body_module, rng, e0):
         got = np.asarray(body_module.rhs(0.0, np.concatenate([rng.normal(size=3), e, v, w]), p), dtype=float)
         assert np.all(np.isfinite(got))
         assert np.max(np.abs(got - expected)) <= 1e-9 * max(1.0, np.max(np.abs(expected)))
+
+
+@pytest.fixture(scope="module")
+def top_module(tmp_path_factory):
+    import importlib.util
+
+    import gacli
+
+    derivation = gacli.derive(gacli.load(KANE_SET / "quaternion_frame_top.yaml"))
+    assert derivation.code.operations < 100  # the program's ω × r in body axes, not the polynomial position
+    (name, source), = gacli.emit(derivation, "python").items()
+    path = tmp_path_factory.mktemp("quaternion_frame_top") / name
+    path.write_text(source)
+    spec = importlib.util.spec_from_file_location("quaternion_frame_top", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("e0", [0.5, 1e-3, 1e-6, 1e-9, 0.0])
+def test_the_top_s_generated_code_is_regular_at_every_attitude(top_module, rng, e0):
+    """Euler's equations about the fixed point written here: I_O ẇ = l e_z × Rᵀ(−m g N_z) − w × I_O w,
+    with R from SciPy (scalar last) and ė = ½ Eᵀ w."""
+    from scipy.spatial.transform import Rotation
+
+    values = {"m": 1.0, "l": 0.2, "A": 0.01, "C": 0.004, "g": 9.81}
+    p = [values[n] for n in top_module.PARAMETERS]
+    m, l, g = values["m"], values["l"], values["g"]
+    inertia = np.array([values["A"] + m * l * l, values["A"] + m * l * l, values["C"]])
+    for _ in range(3):
+        e, w = unit_quaternion(rng, e0), rng.normal(size=3)
+        a, b, c, d = e
+        E = np.array([[-b, a, d, -c], [-c, -d, a, b], [-d, c, -b, a]])
+        weight = Rotation.from_quat([b, c, d, a]).as_matrix().T @ np.array([0.0, 0.0, -m * g])
+        torque = np.cross([0.0, 0.0, l], weight)
+        expected = np.concatenate([E.T @ w / 2, (torque - np.cross(w, inertia * w)) / inertia])
+        got = np.asarray(top_module.rhs(0.0, np.concatenate([e, w]), p), dtype=float)
+        assert np.all(np.isfinite(got))
+        assert np.max(np.abs(got - expected)) <= 1e-9 * max(1.0, np.max(np.abs(expected)))
