@@ -194,3 +194,61 @@ def test_the_top_s_generated_code_is_regular_at_every_attitude(top_module, rng, 
         got = np.asarray(top_module.rhs(0.0, np.concatenate([e, w]), p), dtype=float)
         assert np.all(np.isfinite(got))
         assert np.max(np.abs(got - expected)) <= 1e-9 * max(1.0, np.max(np.abs(expected)))
+
+
+GIMBAL = """
+gacli: 1
+name: quaternion_on_turntable
+parameters: [m, g, l, A, B, C, J]
+coordinates: [phi, q0, q1, q2, q3]
+quasi_coordinates: [w_1, w_2, w_3]
+independent: [phi, w_1, w_2, w_3]
+frames:
+  table: {rotations: [[z, phi]]}
+  top: {parent: table, quaternion: [q0, q1, q2, q3], rates: [w_1, w_2, w_3]}
+bodies:
+  table: {mass: m, position: [0, 0, 0], frame: table, inertia: [J, J, 2*J]}
+  top: {mass: m, position: {top: [0, 0, l]}, frame: top, inertia: [A, B, C]}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: top}
+"""
+
+
+def kane_gimbal():
+    """A top whose quaternion orients it from a turntable (rates relative to the table), about a fixed point."""
+    phi, u0 = me.dynamicsymbols("phi u_0")
+    q = me.dynamicsymbols("q0:4")
+    u = me.dynamicsymbols("w_1:4")
+    m, g, l, A, B, C, J = sp.symbols("m g l A B C J")
+    N = me.ReferenceFrame("N")
+    table = N.orientnew("table", "Axis", [phi, N.z])
+    table.set_ang_vel(N, u0 * N.z)
+    top = me.ReferenceFrame("top")
+    top.orient_quaternion(table, q)
+    top.set_ang_vel(table, u[0] * top.x + u[1] * top.y + u[2] * top.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", l * top.z)
+    G.v2pt_theory(O, N, top)
+    bodies = [me.RigidBody("table", O, table, m, (me.inertia(table, J, J, 2 * J), O)),
+              me.RigidBody("top", G, top, m, (me.inertia(top, A, B, C), G))]
+    kd = [phi.diff() - u0] + list(me.kinematic_equations(u, q, "quaternion"))
+    kane = me.KanesMethod(N, q_ind=[phi, *q], u_ind=[u0, *u], kd_eqs=kd)
+    kane.kanes_equations(bodies, [(G, -m * g * N.z)])
+    return kane, [phi, *q], [u0, *u], (m, g, l, A, B, C, J)
+
+
+def test_a_quaternion_frame_turned_from_a_turning_frame_against_kane(rng):
+    from gacli.loader.loading import loads
+
+    d = derive(loads(GIMBAL))
+    kane, coordinates, speeds, constants = kane_gimbal()
+    for e0 in (0.6, 0.0):
+        values = dict(zip("m g l A B C J".split(), (1.3, 9.81, 0.4, 0.7, 1.1, 0.5, 0.9)))
+        values.update(zip(E, unit_quaternion(rng, e0)), phi=rng.normal())
+        rates = dict(zip(("phi", *W), rng.normal(size=4)))
+        values.update({f"dot({n})": v for n, v in rates.items()})
+        point = {s: values[str(s)] for s in constants}
+        point.update({c: values[c.name] for c in coordinates})
+        point.update(dict(zip(speeds, (rates[n] for n in ("phi", *W)))))
+        assert close(gacli_accelerations(d, values), kane_accelerations(kane, point))
