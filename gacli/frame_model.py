@@ -31,13 +31,18 @@ class FrameEdge:
 
     Components turn as v_parent = R v_name, R the simple rotation of
     ``gacli.loader.frames.simple_rotation``. A frame declared with only an
-    origin is its parent turned by 0.
+    origin is its parent turned by 0. A frame turned by Euler parameters has
+    ``quaternion`` (e0, e1, e2, e3), R of ``gacli.loader.frames.quaternion_rotation``,
+    and the names of its body rates relative to the parent in ``rates`` (none:
+    ω = 2 G(e) ė); its ``axis`` is -1 and its ``angle`` 0.
     """
 
     name: str
     parent: str
     axis: int
     angle: sp.Expr
+    quaternion: tuple[sp.Expr, sp.Expr, sp.Expr, sp.Expr] | None = None
+    rates: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

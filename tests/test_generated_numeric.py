@@ -46,9 +46,14 @@ def random_states(d, seed):
     """
     lay = layout(d)
     rng = np.random.default_rng(seed)
+    # The two routes to a quaternion frame's equations agree on its unit sphere, where they hold.
+    spheres = [[lay.state.index(str(e)) for e in edge.quaternion] for edge in
+               (d.system.frames.edges if d.system.frames is not None else ()) if edge.quaternion is not None]
     for _ in range(STATES):
-        yield (rng.uniform(0.3, 1.2), rng.uniform(0.3, 1.2, len(lay.state)),
-               rng.uniform(0.3, 1.2, len(lay.parameters)), rng.uniform(0.3, 1.2, len(lay.r)))
+        x = rng.uniform(0.3, 1.2, len(lay.state))
+        for i in spheres:
+            x[i] /= np.linalg.norm(x[i])
+        yield (rng.uniform(0.3, 1.2), x, rng.uniform(0.3, 1.2, len(lay.parameters)), rng.uniform(0.3, 1.2, len(lay.r)))
 
 
 def sympy_values(d, t, x, p, r):

@@ -94,4 +94,8 @@ def _body_dependencies(system: System) -> set[str]:
             symbols |= _form_symbols(form)
             names.update(form.names)
         names.update(coordinates[s] for s in symbols if s in coordinates)
+    # A rotation in quasi-coordinates (a quaternion frame's rates) turns by the coordinates they are defined by.
+    for w in system.quasi_coordinates:
+        if w.name in names and w.differential is not None:
+            names.update(w.differential.names)
     return names

@@ -91,6 +91,8 @@ class Geometry:
             self.error(decl.parent, f"{where}.parent", f"'{parent}' is not a frame declared before '{decl.name}'",
                        did_you_mean(parent, frames))
             return None
+        if decl.quaternion:
+            return self._quaternion_frame(decl, frames[parent])
         rotations = []
         for i, (axis, text) in enumerate(decl.rotations):
             angle = self.expression(text, f"{where}.rotations[{i}]", self.scopes.config)

@@ -47,6 +47,12 @@ def _edges(decl: SystemDecl, parsed: dict, links: list[PointLink]) -> tuple[list
     edges, origins = [], []
     for frame in decl.frames:
         parent = frame.parent.text if frame.parent is not None else INERTIAL
+        if frame.quaternion:
+            e, rates = parsed[id(frame)]
+            edges.append(FrameEdge(frame.name, parent, -1, sp.S.Zero, e, rates))
+            if frame.origin is not None:
+                origins.append((frame.name, _point(f"{frame.name}@origin", frame.origin, parsed, links)))
+            continue
         rotations = parsed.get(id(frame), ()) or (("z", sp.S.Zero),)  # only an origin: the parent's axes
         for i, (axis, angle) in enumerate(rotations):
             name = frame.name if i == len(rotations) - 1 else f"{frame.name}#{i}"

@@ -53,6 +53,9 @@ class Frame:
     origin: tuple[sp.Expr, ...] | None = None
     # The simple rotations from N that reach it, runs about one axis merged (see canonical_chain).
     chain: tuple[tuple[str, sp.Expr], ...] = ()
+    # False for a frame turned by a quaternion and every frame below it: no chain of simple
+    # rotations reaches them, and their turns are built as written.
+    chained: bool = True
 
 
 def inertial_frame(width: int) -> Frame:
@@ -72,7 +75,7 @@ def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
     turns written as one frame each, so that either writing gives the same
     expressions, and so the same equations at the same cost.
     """
-    chain, changed = canonical_chain(parent.chain, rotations, differential)
+    chain, changed = canonical_chain(parent.chain, rotations, differential) if parent.chained else ((), False)
     if changed:
         return _from_chain(name, chain, parent.omega.cols, differential)
     relative = sp.eye(3).tolist()
@@ -87,7 +90,38 @@ def oriented(name: str, parent: Frame, rotations: Sequence[tuple[str, sp.Expr]],
     # nothing to write out, and the walk would cost the tree of a long chain, not its graph.
     plain = all(angle.is_Symbol or angle.is_number or (-angle).is_Symbol for _, angle in rotations)
     return Frame(name, sp.ImmutableMatrix(_product(parent.dcm.tolist(), relative)),
-                 sp.ImmutableMatrix(omega if plain else omega.applyfunc(sp.expand_trig)), chain=chain)
+                 sp.ImmutableMatrix(omega if plain else omega.applyfunc(sp.expand_trig)), chain=chain,
+                 chained=parent.chained)
+
+
+def quaternion_rotation(e: Sequence[sp.Expr]) -> sp.Matrix:
+    """R with v_parent = R v_child for the Euler parameters e = (e0, e1, e2, e3), scalar first.
+
+    The homogeneous form (e0² + e1² − e2² − e3², ...): every entry a quadratic, so no
+    attitude is special; on the unit sphere it is the rotation by 2 acos(e0) about (e1, e2, e3).
+    """
+    a, b, c, d = e
+    return sp.Matrix([
+        [a*a + b*b - c*c - d*d, 2*(b*c - a*d), 2*(b*d + a*c)],
+        [2*(b*c + a*d), a*a - b*b + c*c - d*d, 2*(c*d - a*b)],
+        [2*(b*d - a*c), 2*(c*d + a*b), a*a - b*b - c*c + d*d],
+    ])
+
+
+def quaternion_rates(e: Sequence[sp.Expr]) -> sp.Matrix:
+    """G(e), 3 × 4, with ω (child axes, relative to the parent) = 2 G(e) ė on the unit sphere;
+    G Gᵀ = (e·e) E and G e = 0, so ė = ½ Gᵀ ω there."""
+    a, b, c, d = e
+    return sp.Matrix([[-b, a, d, -c], [-c, -d, a, b], [-d, c, -b, a]])
+
+
+def quaternion_oriented(name: str, parent: Frame, e: Sequence[sp.Expr], relative: sp.Matrix) -> Frame:
+    """The frame turned from ``parent`` by the Euler parameters ``e``, with ``relative`` its ω dt
+    relative to the parent along its own axes (a form vector): ω = Rᵀ ω_parent + relative."""
+    R = quaternion_rotation(e).tolist()
+    omega = sp.Matrix(_product(_transposed(R), sp.Matrix(parent.omega).tolist())) + relative
+    return Frame(name, sp.ImmutableMatrix(_product(parent.dcm.tolist(), R)), sp.ImmutableMatrix(omega),
+                 chained=False)
 
 
 def canonical_chain(start: Sequence[tuple[str, sp.Expr]], rotations: Sequence[tuple[str, sp.Expr]],

@@ -21,6 +21,7 @@ from gacli.loader.inertia import MovedInertia
 from gacli.loader.lines import Lines
 from gacli.loader.forms import Forms
 from gacli.loader.frame_records import frame_model
+from gacli.loader.quaternions import Quaternions
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.errors import Diagnostic, Location, SystemFileError
@@ -103,7 +104,7 @@ def _guarded(source: SourceFile, stage: Callable[[], System]) -> System:
 
 
 @dataclass
-class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
+class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternions):
     decl: SystemDecl
     diagnostics: list[Diagnostic] = field(default_factory=list)
     known: dict[sp.Symbol, float] = field(default_factory=dict)  # parameters' numeric values, as read
@@ -166,7 +167,9 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
         )
         inputs = tuple(Input(s.name, self.where_of(s.node), s.description, s.unit, s.latex) for s in self.decl.of_kind("input"))
         quasi = tuple(self._quasi(s) for s in self.decl.of_kind("quasi"))
+        self.quaternion_frames = []
         self.frames = self._frames()
+        quasi = self._frame_rates(quasi)
         self._failed_points: set[str] = set()
         self.points = self._points()
         self._frame_origins()
@@ -182,7 +185,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia):
         potential = springs + (potential if potential is not None else 0)
         work = dampers if work is None else (work if dampers is None else work + dampers)
         constraints = tuple(c for i, d in enumerate(self.decl.constraints) for c in self._constraints_of(i, d))
-        constraints += self._rolling_constraints(bodies)
+        constraints += self._unit_norms() + self._rolling_constraints(bodies)
         independent = self._independent()
         uses_frames = bool(self.decl.frames or self.decl.points or self.decl.rolling)
         frames = frame_model(self.decl, self.parsed, bodies, self.torque_owners) if uses_frames and not self.diagnostics else None

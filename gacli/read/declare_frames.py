@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from gacli.read.reader import Reader
+from gacli.read.reader import IDENTIFIER, Reader, describe
 from gacli.read.schema import AXIS_NAMES, FRAME_KEYS, ROLLING_KEYS, FrameDecl, PointDecl, RollingDecl
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 
@@ -29,13 +29,58 @@ def _frame(reader: Reader, key: Scalar, node: Node) -> FrameDecl | None:
     origin = reader.vector(fields["origin"][1], f"{where}.origin", (3,), point=True) if "origin" in fields else None
     if "origin" in fields and origin is None:
         return None
+    if "quaternion" in fields or "rates" in fields:
+        return _quaternion_frame(reader, key, node, fields, parent, origin)
     if ("rotations" in fields) == ("sequence" in fields) and not (origin and "rotations" not in fields):
-        reader.error(node, where, "a frame needs either 'rotations' ([[axis, angle], ...]) or 'sequence' and "
-                     "'angles' (or only an 'origin': its parent's axes, moved)")
+        reader.error(node, where, "a frame needs either 'rotations' ([[axis, angle], ...]), 'sequence' and "
+                     "'angles', or 'quaternion' ([e0, e1, e2, e3]) (or only an 'origin': its parent's axes, moved)")
         return None
     # A frame with only an origin keeps its parent's axes: the plane of a translating surface.
     rotations = _rotations(reader, fields, where) if "rotations" in fields or "sequence" in fields else ()
     return FrameDecl(key.text, key, parent, rotations, origin) if rotations is not None else None
+
+
+def _quaternion_frame(reader: Reader, key: Scalar, node: Mapping, fields: dict, parent, origin) -> FrameDecl | None:
+    """A frame oriented by four Euler parameters (coordinates, scalar first), its body rates optionally
+    named as quasi-coordinates (docs/frames.md, "Quaternions")."""
+    where = f"frames.{key.text}"
+    if "quaternion" not in fields:
+        reader.error(fields["rates"][0], where, "'rates' names the body rates of a frame oriented by a "
+                     "'quaternion'; this frame has none")
+        return None
+    clash = next((k for k in ("rotations", "sequence", "angles") if k in fields), None)
+    if clash is not None:
+        reader.error(fields[clash][0], where, f"a frame is oriented either by 'quaternion' or by '{clash}', "
+                     "not both")
+        return None
+    quaternion = _names(reader, fields["quaternion"][1], f"{where}.quaternion", 4,
+                        "the four Euler parameters, scalar first, as [e0, e1, e2, e3]")
+    rates = (_names(reader, fields["rates"][1], f"{where}.rates", 3,
+                    "three quasi-coordinates, the body rates along the frame's x, y and z axes")
+             if "rates" in fields else ())
+    if quaternion is None or rates is None:
+        return None
+    return FrameDecl(key.text, key, parent, (), origin, quaternion, rates)
+
+
+def _names(reader: Reader, node: Node, where: str, count: int, what: str) -> tuple[Scalar, ...] | None:
+    """Exactly ``count`` distinct names; None (and a located error) otherwise."""
+    if not isinstance(node, Sequence) or len(node.items) != count:
+        found = f"{len(node.items)} entries" if isinstance(node, Sequence) else describe(node)
+        reader.error(node, where, f"expected a list of {count} names, found {found}", f"give {what}")
+        return None
+    seen: dict[str, int] = {}
+    for i, item in enumerate(node.items):
+        if not isinstance(item, Scalar) or not IDENTIFIER.match(item.text):
+            # A constant or scaled entry would not stay on the unit sphere: only names of the file's own.
+            reader.error(item, f"{where}[{i}]", f"expected a name, found {describe(item)}", f"give {what}")
+            return None
+        if item.text in seen:
+            reader.error(item, f"{where}[{i}]", f"'{item.text}' is named twice (also entry {seen[item.text]})",
+                         f"give {what}")
+            return None
+        seen[item.text] = i
+    return tuple(node.items)
 
 
 def _rotations(reader: Reader, fields: dict, where: str):

@@ -135,12 +135,17 @@ def _frame() -> dict:
         "rotations": {"type": "array", "items": pair, "minItems": 1},
         "sequence": {"type": "string", "pattern": "^[XYZxyz]{1,3}$", "description": "as ZXZ"},
         "angles": _list((1, 2, 3)),
+        "quaternion": {"type": "array", "items": _ref("name"), "minItems": 4, "maxItems": 4,
+                       "description": "Euler parameters, scalar first: [e0, e1, e2, e3]"},
+        "rates": {"type": "array", "items": _ref("name"), "minItems": 3, "maxItems": 3,
+                  "description": "quasi-coordinates: the body rates along the frame's axes"},
         "description": _text(),
     }
-    # Rotations, or a sequence with angles, or neither with an origin (the parent's axes, moved).
-    neither = {"not": {"anyOf": [{"required": ["rotations"]}, {"required": ["sequence"]}]},
-               "required": ["origin"]}
-    return _closed(properties, oneOf=[{"required": ["rotations"]}, {"required": ["sequence", "angles"]}, neither])
+    # Rotations, a sequence with angles, a quaternion, or none with an origin (the parent's axes, moved).
+    neither = {"not": {"anyOf": [{"required": ["rotations"]}, {"required": ["sequence"]},
+                                 {"required": ["quaternion"]}]}, "required": ["origin"]}
+    return _closed(properties, oneOf=[{"required": ["rotations"]}, {"required": ["sequence", "angles"]},
+                                      {"required": ["quaternion"]}, neither])
 
 
 def _body() -> dict:

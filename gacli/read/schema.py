@@ -24,7 +24,7 @@ SYMBOL_KEYS = ("description", "value", "unit", "latex")
 QUASI_KEYS = ("description", "differential", "unit", "latex")
 BODY_KEYS = ("mass", "position", "inertia", "inertia_about", "inertia_in", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
-FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "description")
+FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "quaternion", "rates", "description")
 ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
 VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "coincide", "description")
 AXIS_NAMES = ("x", "y", "z")
@@ -61,13 +61,17 @@ class VectorDecl:
 @dataclass(frozen=True)
 class FrameDecl:
     """A frame turned from ``parent`` by successive rotations (axis, angle) about its own axes,
-    with its origin at a point (``origin``), or at its parent's origin when none is given."""
+    or by the four Euler parameters named in ``quaternion`` (scalar first; then ``rotations`` is
+    empty), with ``rates`` the quasi-coordinates its body rates are (none: the parameters' own
+    rates); with its origin at a point (``origin``), or at its parent's origin when none is given."""
 
     name: str
     node: Scalar
     parent: Scalar | None
     rotations: tuple[tuple[Scalar, Scalar], ...]
     origin: VectorDecl | None = None
+    quaternion: tuple[Scalar, ...] = ()
+    rates: tuple[Scalar, ...] = ()
 
 
 @dataclass(frozen=True)

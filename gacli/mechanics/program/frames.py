@@ -7,6 +7,11 @@ by pitch + head angle). ω of a frame comes from its parent's by the
 transport theorem, ω_F = Rᵀ ω_G + Σ θ̇ e, for any pass of rates (see
 :class:`~gacli.mechanics.program.vectors.Pass`); α with all accelerations
 zero, the velocity-product part of eq. (14.14), is α_F = Rᵀ α_G + (Σ θ̇) ω_F × e.
+
+A frame turned by a quaternion (an edge with ``quaternion``) is one general
+rotation: its nine direction cosines named once, ω_F = Rᵀ ω_G + ω_rel with
+ω_rel its rates (or 2 G(e) ė), and α_F = Rᵀ α_G + ω_F × ω_rel, since
+G(ė) ė = 0 leaves ω̇_rel no velocity-product part.
 """
 
 from __future__ import annotations
@@ -14,6 +19,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.frame_model import INERTIAL, FrameEdge
+from gacli.loader.frames import quaternion_rates, quaternion_rotation
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ONE, ZERO, ZV, Pass, add, cross, scale, unit
 
@@ -26,6 +32,8 @@ class FrameTree:
         self.edges = {e.name: e for e in edges}
         # θ̇ of each edge as Σ (∂θ/∂q) q̇: the angles are linear in the coordinates (support.py).
         self.grad = {e.name: {q: sp.diff(e.angle, s) for q, s in coordinates.items() if e.angle.has(s)} for e in edges}
+        self.names = {s: q for q, s in coordinates.items()}
+        self._rotation: dict = {}
         self._omega: dict = {}
         self._alpha: dict = {}
         self._nz: dict = {INERTIAL: (ZERO, ZERO, ONE)}
@@ -39,20 +47,48 @@ class FrameTree:
             out.append(frame)
         return out
 
-    def path(self, src: str, dst: str) -> list[tuple[int, sp.Expr]]:
+    def path(self, src: str, dst: str) -> list[tuple[int, object]]:
         """The rotations (axis, angle) taking components along src to components along dst,
-        consecutive ones about one axis merged."""
+        consecutive ones about one axis merged; a quaternion's is (-1, (edge, up))."""
         a, b = self.chain(src), self.chain(dst)
         common = next(f for f in a if f in b)
-        steps = [(self.edges[f].axis, self.edges[f].angle) for f in a[:a.index(common)]]
-        steps += [(self.edges[f].axis, -self.edges[f].angle) for f in reversed(b[:b.index(common)])]
-        merged: list[tuple[int, sp.Expr]] = []
+        steps = [self._along(f, True) for f in a[:a.index(common)]]
+        steps += [self._along(f, False) for f in reversed(b[:b.index(common)])]
+        merged: list[tuple[int, object]] = []
         for axis, angle in steps:
-            if merged and merged[-1][0] == axis:
+            if merged and axis >= 0 and merged[-1][0] == axis:
                 merged[-1] = (axis, merged[-1][1] + angle)
             else:
                 merged.append((axis, angle))
-        return [(axis, angle) for axis, angle in merged if angle != 0]
+        return [(axis, angle) for axis, angle in merged if axis < 0 or angle != 0]
+
+    def _along(self, edge: str, up: bool) -> tuple[int, object]:
+        e = self.edges[edge]
+        if e.quaternion is not None:
+            return -1, (edge, up)
+        return e.axis, e.angle if up else -e.angle
+
+    def rotation(self, edge: str) -> list[list[sp.Expr]]:
+        """A quaternion edge's direction cosines (v_parent = R v_child), each entry named once."""
+        if edge not in self._rotation:
+            R = quaternion_rotation(self.edges[edge].quaternion)
+            self._rotation[edge] = [[self.tape.let(R[i, j]) for j in range(3)] for i in range(3)]
+        return self._rotation[edge]
+
+    def rotate(self, edge: str, v, up: bool) -> tuple:
+        """v carried across a quaternion edge: R v to the parent (``up``), Rᵀ v back."""
+        R = self.rotation(edge)
+        rows = R if up else [list(column) for column in zip(*R)]
+        return self.tape.vec(sp.Add(*(x * y for x, y in zip(row, v) if x != 0 and y != 0)) for row in rows)
+
+    def relative(self, edge: str, rates: Pass) -> tuple:
+        """ω of a quaternion edge's frame relative to its parent, along its axes: its rates, or 2 G(e) ė."""
+        e = self.edges[edge]
+        if e.rates:
+            return tuple(rates.rate(w) for w in e.rates)
+        G = quaternion_rates(e.quaternion)
+        edot = [rates.rate(self.names[x]) for x in e.quaternion]
+        return tuple(2 * sp.Add(*(G[i, j] * edot[j] for j in range(4))) for i in range(3))
 
     def turn(self, axis: int, angle: sp.Expr, v) -> tuple:
         """R(angle) v about a frame axis (v_parent = R v_child); cos and sin of the angle named once."""
@@ -71,7 +107,7 @@ class FrameTree:
             return self._carried[(key, dst)]
         out = tuple(v)
         for axis, angle in self.path(src, dst):
-            out = self.turn(axis, angle, out)
+            out = self.turn(axis, angle, out) if axis >= 0 else self.rotate(angle[0], out, angle[1])
         if key is not None:
             self._carried[(key, dst)] = out
         return out
@@ -80,6 +116,8 @@ class FrameTree:
         """The frame's nearest ancestor G not reached from it by rotations about its own last axis:
         (G, the axis, the edges between)."""
         e = self.edges[frame]
+        if e.quaternion is not None:
+            return e.parent, -1, [frame]
         edges, top = [frame], e.parent
         while top != INERTIAL and self.edges[top].axis == e.axis:
             edges.append(top)
@@ -98,7 +136,10 @@ class FrameTree:
         if key not in self._omega:
             top, axis, edges = self.group(frame)
             w = list(self.express(self.omega(top, rates), top, frame))
-            w[axis] = w[axis] + sp.Add(*(self.rate(e, rates) for e in edges))
+            if axis < 0:
+                w = add(w, self.relative(frame, rates))
+            else:
+                w[axis] = w[axis] + sp.Add(*(self.rate(e, rates) for e in edges))
             self._omega[key] = self.tape.vec(w, name=("w", frame, rates.key))
         return self._omega[key]
 
@@ -110,7 +151,9 @@ class FrameTree:
             top, axis, edges = self.group(frame)
             a = self.express(self.alpha0(top, actual), top, frame)
             rate = sp.Add(*(self.rate(e, actual) for e in edges))
-            if rate != 0:
+            if axis < 0:
+                a = add(a, cross(self.omega(frame, actual), self.relative(frame, actual)))
+            elif rate != 0:
                 a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
             self._alpha[frame] = self.tape.vec(a, name=("alpha", frame, actual.key))
         return self._alpha[frame]
@@ -125,8 +168,10 @@ class FrameTree:
     def step(self, edge: str, v, up: bool) -> tuple:
         """v carried across one edge: from the edge's frame to its parent (``up``) or back."""
         e = self.edges[edge]
+        if e.quaternion is not None:
+            return self.rotate(edge, v, up)
         return self.turn(e.axis, e.angle if up else -e.angle, v)
 
     def constant(self, edge: str) -> bool:
-        """The edge's angle depends on no coordinate."""
-        return not self.grad[edge]
+        """The edge's angle depends on no coordinate (a quaternion's always does)."""
+        return not self.grad[edge] and self.edges[edge].quaternion is None

@@ -17,7 +17,7 @@ import dataclasses
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.frame_model import FrameModel, FrameVector
+from gacli.frame_model import INERTIAL, FrameModel, FrameVector
 from gacli.model import System
 
 
@@ -83,6 +83,9 @@ def _frames(system: System, model: FrameModel) -> str | None:
     # frames are free vectors (docs/frames.md), so the origin enters nothing else the program forms.
     coordinates = [S.value(c.name) for c in system.coordinates]
     for edge in model.edges:
+        if edge.quaternion is not None and edge.parent != INERTIAL:
+            # The units' search for frames where an inertia is constant (units.py) knows simple turns only.
+            return f"frame '{edge.name}' is turned by a quaternion from a frame other than N"
         if _timed(edge.angle, system):
             return f"the angle of frame '{edge.name}' depends on time"
         if any(sp.diff(edge.angle, q).free_symbols & set(coordinates) for q in coordinates if edge.angle.has(q)):
