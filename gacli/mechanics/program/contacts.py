@@ -22,6 +22,7 @@ import sympy as sp
 
 from gacli.frame_model import INERTIAL, BodyPlacement, RollingContact
 from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.vectors import ZERO, ZV, Pass, add, cross, dot, scale, unit
 
 
