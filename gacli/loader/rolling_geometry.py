@@ -83,7 +83,9 @@ class Shape:
 def size_problem(value: sp.Expr, what: str, known: Mapping[sp.Symbol, float]) -> str:
     """:func:`radius_problem` for any length that must be positive (a semi-axis, say)."""
     problem = radius_problem(value, known)
-    return problem.replace("the radius", what) if problem else ""
+    if problem == NOT_POSITIVE:
+        return f"{what} must be positive: with one of 0 or less the body has no single contact point"
+    return problem.replace("the radius", what)
 
 
 def tube_problem(tube: sp.Expr, radius: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
@@ -94,7 +96,7 @@ def tube_problem(tube: sp.Expr, radius: sp.Expr, known: Mapping[sp.Symbol, float
     if not (tube.free_symbols | radius.free_symbols) <= set(known):
         return ""
     try:
-        rho, r = evaluate(tube, known)[0], evaluate(radius, known)[0]
+        rho, r = float(evaluate(tube, known)[0]), float(evaluate(radius, known)[0])
     except UndefinedValue:
         return "the tube radius has no real value"
     if rho < 0:

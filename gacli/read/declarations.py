@@ -45,7 +45,7 @@ def read_declarations(source: SourceFile) -> tuple[SystemDecl | None, list[Diagn
         work=_optional_expression(reader, top, "work"),
         potential=_optional_expression(reader, top, "potential"),
     )
-    check_placements(reader, decl.bodies, decl.rolling)
+    check_placements(reader, top, decl.bodies, decl.rolling)
     return decl, reader.diagnostics
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from gacli.read.reader import Reader
 from gacli.read.schema import ROLLING_KEYS, BodyDecl, RollingDecl, VectorDecl
-from gacli.read.source import Mapping, Sequence
+from gacli.read.source import Mapping, Scalar, Sequence
 
 
 def read_rolling(reader: Reader, top: dict) -> tuple[RollingDecl, ...]:
@@ -77,7 +77,8 @@ def _semi_axes(reader: Reader, node, where: str) -> VectorDecl | None:
     return VectorDecl(node, components=components) if components else None
 
 
-def check_placements(reader: Reader, bodies: tuple[BodyDecl, ...], rolling: tuple[RollingDecl, ...]) -> None:
+def check_placements(reader: Reader, top: dict, bodies: tuple[BodyDecl, ...],
+                     rolling: tuple[RollingDecl, ...]) -> None:
     """Each body has a ``position`` or is placed by one rolling contact's ``contact``, not both."""
     placing: dict[str, RollingDecl] = {}
     positioned = {b.name for b in bodies if b.position is not None}
@@ -92,7 +93,21 @@ def check_placements(reader: Reader, bodies: tuple[BodyDecl, ...], rolling: tupl
             reader.error(decl.contact.node, where, f"'{name}' has a 'position' already: the contact places the "
                          "body, so give one of them", "leave out the body's 'position'")
         placing.setdefault(name, decl)
+    claimed = _claimed(top) | set(placing)  # an entry refused above has said what is wrong with it
     for body in bodies:
-        if body.position is None and body.name not in placing:
+        if body.position is None and body.name not in claimed:
             reader.error(body.node, f"bodies.{body.name}", "missing required key 'position'",
                          "or place the body from its contact point with a rolling contact's 'contact'")
+
+
+def _claimed(top: dict) -> set[str]:
+    """The bodies that rolling entries with a ``contact`` name, as written (read or refused)."""
+    node = top["rolling"][1] if "rolling" in top else None
+    out = set()
+    for item in node.items if isinstance(node, Sequence) else ():
+        if isinstance(item, Mapping):
+            fields = {key.text: value for key, value in item.items}
+            body = fields.get("body")
+            if "contact" in fields and isinstance(body, Scalar):
+                out.add(body.text)
+    return out
