@@ -123,3 +123,36 @@ def test_spun_the_other_way_it_keeps_its_spin():
     pytest.importorskip("scipy")
     rate = _spun(3.0).column("dot(yaw)")
     assert rate.min() > 2.9 and rate[-1] > 2.9
+
+
+# -- a sphere is the ellipsoid with equal semi-axes ---------------------------------------------
+
+BALL = """
+gacli: 1
+name: ball
+parameters: [m, r, e, A, B, C, g]
+coordinates: [yaw, lean, pitch, x, y]
+independent: [yaw, lean, pitch]
+frames:
+  heading: {rotations: [[z, yaw]]}
+  leaned: {parent: heading, rotations: [[x, lean]]}
+  ball: {parent: leaned, rotations: [[y, pitch]]}
+bodies:
+  ball: {mass: m, frame: ball, inertia: [A, B, C]}
+rolling:
+  - {body: ball, SHAPE, contact: {N: [x, y, 0]}, centre: [0, 0, e]}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: ball}
+"""
+
+
+def test_an_ellipsoid_with_equal_semi_axes_rolls_as_the_sphere(rng):
+    from bench_kane_set import GacliSide, compare, random_state
+    from models import Reference
+
+    sphere, ellipsoid = (gacli.derive(gacli.loads(BALL.replace("SHAPE", shape)))
+                         for shape in ("radius: r", "semi_axes: [r, r, r]"))
+    sides = [GacliSide(d, d.kinematic_equations, d.mass_matrix.todok(), list(d.forcing)) for d in (sphere, ellipsoid)]
+    for _ in range(3):
+        values = random_state(sphere, Reference(None, {}), rng)
+        assert compare(sides[1].evaluate(values), sides[0].evaluate(values)) < TOLERANCE

@@ -111,6 +111,9 @@ def ellipsoid_lift(normal: Sequence[sp.Expr], semi_axes: Sequence[sp.Expr]) -> s
     """The geometric centre from the contact, along the body's axes: E n / √(nᵀ E n),
     E = diag(a², b², c²), n the plane's normal along the body's axes (the outward normal at
     the contact is −n). A sphere's (a = b = c = r) is r n."""
+    if semi_axes[0] == semi_axes[1] == semi_axes[2]:
+        # A sphere: √(r² (n·n)) is |r| once n·n = 1 is seen, and |r| evaluates nowhere numerically.
+        return sp.Matrix([semi_axes[0] * x for x in normal])
     squares = [s ** 2 for s in semi_axes]
     height = sp.sqrt(sp.Add(*(e * x ** 2 for e, x in zip(squares, normal))))
     return sp.Matrix([e * x / height for e, x in zip(squares, normal)])
