@@ -100,6 +100,20 @@ def test_torus_agrees_with_kanes_method(rng):
         assert compare(ours.evaluate(values), kane.evaluate(values)) < TOLERANCE
 
 
+def test_the_program_agrees_with_kanes_method(rng):
+    from bench_kane_set import KaneSide, compare, random_state
+    from test_rolling_ellipsoid import program_side
+
+    reference = kane_torus()
+    kane = KaneSide(reference)
+    derivation, ours = program_side(WHEEL)
+    for _ in range(3):
+        values = random_state(derivation, reference, rng)
+        values["parameters"]["rho"] = 0.3 * values["parameters"]["R"]
+        values = random_state_with(derivation, values)
+        assert compare(ours.evaluate(values), kane.evaluate(values)) < TOLERANCE
+
+
 def random_state_with(derivation, values):
     """``values`` with gacli's symbols refreshed from the (edited) names."""
     from gacli.algebra import symbols as S
