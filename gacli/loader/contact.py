@@ -242,7 +242,7 @@ class RollingContacts:
         lift = self._lift(decl, shape, frame, surface, where)
         if offset is None or lift is None:
             return None
-        terms = [*lift, *_negated_offset(self.parsed.get(id(decl.centre)), body)]
+        terms = [*lift, *_negated_offset(self.parsed.get(id(decl.centre)) if decl.centre is not None else None, body)]
         self.parsed[("placed", body.name)] = (decl.contact, tuple(terms))
         total = sp.Matrix(contact) - offset
         for name, components in lift:

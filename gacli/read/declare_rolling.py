@@ -8,7 +8,7 @@ the body needs no ``position`` (docs/frames.md, "Rolling").
 
 from __future__ import annotations
 
-from gacli.read.reader import Reader
+from gacli.read.reader import Reader, did_you_mean
 from gacli.read.schema import ROLLING_KEYS, BodyDecl, RollingDecl, VectorDecl
 from gacli.read.source import Mapping, Scalar, Sequence
 
@@ -86,7 +86,11 @@ def check_placements(reader: Reader, top: dict, bodies: tuple[BodyDecl, ...],
         if decl.contact is None:
             continue
         name, where = decl.body.text, f"rolling[{decl.index}].contact"
-        if name in placing:
+        if name not in {b.name for b in bodies}:
+            # Said here, or the body it was meant for would only be missing its position.
+            reader.error(decl.body, f"rolling[{decl.index}].body", f"'{name}' is not a body",
+                         did_you_mean(name, [b.name for b in bodies]))
+        elif name in placing:
             reader.error(decl.contact.node, where, f"'{name}' is placed by rolling[{placing[name].index}].contact "
                          "already: a body is placed by one contact")
         elif name in positioned:
