@@ -22,6 +22,7 @@ for _path in (ROOT / "benchmarks" / "kane_set", ROOT / "benchmarks"):
         sys.path.insert(0, str(_path))
 
 import gacli  # noqa: E402
+from gacli.algebra import symbols as S  # noqa: E402
 
 TOLERANCE = 1e-10
 
@@ -126,7 +127,6 @@ def test_the_rows_are_derived_and_the_body_needs_no_position():
     rows = [c for c in system.constraints if c.derived]
     assert [c.text for c in rows] == ["rolling of rattleback (x)", "rolling of rattleback (y)"]
     # At rest upright the centre of mass is c - h above the contact (x, y).
-    from gacli.algebra import symbols as S
     body = system.bodies[0]
     values = {S.value(n): v for n, v in dict(yaw=0.3, lean=0, pitch=0, x=0.5, y=-0.2).items()}
     values.update({S.value(p.name): p.value for p in system.parameters})
@@ -191,3 +191,71 @@ def test_an_ellipsoid_with_equal_semi_axes_rolls_as_the_sphere(rng):
     for _ in range(3):
         values = random_state(sphere, Reference(None, {}), rng)
         assert compare(sides[1].evaluate(values), sides[0].evaluate(values)) < TOLERANCE
+
+
+# -- on a tilted plane: the horizontal plane under tilted gravity ---------------------------------
+
+TILTED = """
+gacli: 1
+name: tilted
+parameters: [a, b, c, h, m, Ixx, Iyy, Izz, Ixy, g, beta]
+coordinates: [yaw, lean, pitch, x, y]
+independent: [yaw, lean, pitch]
+frames:
+  PLANE
+  heading: {parent: SURFACE, rotations: [[z, yaw]]}
+  leaned: {parent: heading, rotations: [[x, lean]]}
+  body: {parent: leaned, rotations: [[y, pitch]]}
+bodies:
+  rattleback: {mass: m, frame: body, inertia: [[Ixx, Ixy, 0], [Ixy, Iyy, 0], [0, 0, Izz]]}
+rolling:
+  - {body: rattleback, SHAPE, contact: {SURFACE: [x, y, 0]}, centre: [0, 0, h]ON}
+loads:
+  - {force: GRAVITY, at: rattleback}
+"""
+
+
+def tilted_pair(shape: str):
+    """The body on the plane turned by beta about N's x, and on N's plane under gravity turned by -beta."""
+    on_plane = (TILTED.replace("PLANE", "plane: {rotations: [[x, beta]]}").replace("SURFACE", "plane")
+                .replace("ON", ", on: plane").replace("GRAVITY", "{N: [0, 0, -m*g]}"))
+    level = (TILTED.replace("PLANE", "").replace("SURFACE", "N").replace("ON", "")
+             .replace("GRAVITY", "{N: [0, -m*g*sin(beta), -m*g*cos(beta)]}"))
+    return [gacli.derive(gacli.loads(text.replace("SHAPE", shape))) for text in (on_plane, level)]
+
+
+@pytest.mark.parametrize("shape", ["semi_axes: [a, b, c]", "radius: a, tube: c, axle: [0, 1, 0]"],
+                         ids=["ellipsoid", "torus"])
+def test_on_a_tilted_plane_as_on_the_level_under_tilted_gravity(shape, rng):
+    from bench_kane_set import GacliSide, compare, random_state
+    from models import Reference
+
+    pair = tilted_pair(shape)
+    sides = [GacliSide(d, d.kinematic_equations, d.mass_matrix.todok(), list(d.forcing)) for d in pair]
+    for _ in range(3):
+        values = random_state(pair[0], Reference(None, {}), rng)
+        if "tube" in shape:  # a tube smaller than the wheel
+            values["parameters"]["c"] = 0.3 * values["parameters"]["a"]
+            values["gacli"].update({S.value("c"): values["parameters"]["c"]})
+        assert compare(sides[0].evaluate(values), sides[1].evaluate(values)) < TOLERANCE
+
+
+@pytest.mark.parametrize("shape", ["semi_axes: [a, b, c]", "radius: a, tube: c, axle: [0, 1, 0]"],
+                         ids=["ellipsoid", "torus"])
+def test_on_a_plane_moving_uniformly_as_on_a_fixed_one(shape, rng):
+    """Galileo: on a plane translating at a constant velocity, the motion relative to it is the fixed plane's."""
+    from bench_kane_set import GacliSide, compare, random_state
+    from models import Reference
+
+    fixed = TILTED.replace("PLANE", "plane: {rotations: [[z, 0]]}").replace("SURFACE", "plane")
+    moving = fixed.replace("frames:\n  plane: {rotations: [[z, 0]]}",
+                           "points:\n  O: [V*t, W*t, 0]\nframes:\n  plane: {rotations: [[z, 0]], origin: O}").replace(
+        "contact: {plane:", "contact: {from: O, plane:").replace("parameters: [", "parameters: [V, W, ")
+    pair = [gacli.derive(gacli.loads(text.replace("ON", ", on: plane").replace("GRAVITY", "{N: [0, 0, -m*g]}")
+                                     .replace("SHAPE", shape))) for text in (moving, fixed)]
+    sides = [GacliSide(d, d.kinematic_equations, d.mass_matrix.todok(), list(d.forcing)) for d in pair]
+    for _ in range(3):
+        values = random_state(pair[0], Reference(None, {}), rng)
+        values["parameters"]["c"] = 0.3 * values["parameters"]["a"]
+        values["gacli"].update({S.value("c"): values["parameters"]["c"], S.T: 0.7})
+        assert compare(sides[0].evaluate(values), sides[1].evaluate(values)) < TOLERANCE
