@@ -80,9 +80,13 @@ def test_general_rattleback_agrees_with_kanes_method(kane, rng):
 
 
 def test_the_system_file_agrees_with_kanes_method(kane, rng):
-    # systems/rattleback.yaml: the mass centre h below the centre, no Ixz, Iyz.
+    # systems/rattleback.yaml: the mass centre h below the centre, principal moments A, B, C with
+    # the first two turned by delta about z.
     def kanes_names(p):
-        return {"d": 0.0, "e": 0.0, "f": -p["h"], "Ixz": 0.0, "Iyz": 0.0}
+        c, s = np.cos(p["delta"]), np.sin(p["delta"])
+        return {"d": 0.0, "e": 0.0, "f": -p["h"], "Ixz": 0.0, "Iyz": 0.0, "Izz": p["C"],
+                "Ixx": p["A"] * c**2 + p["B"] * s**2, "Iyy": p["A"] * s**2 + p["B"] * c**2,
+                "Ixy": (p["A"] - p["B"]) * s * c}
 
     assert _disagreement(derived("rattleback"), kane, rng, kanes_names) < TOLERANCE
 
