@@ -80,15 +80,19 @@ class BodyPlacement:
 class RollingContact:
     """``body`` rolls without slipping on the plane z = 0 of frame ``on`` (None: N).
 
-    ``axle`` is in the body's axes (None: a sphere); ``centre`` is the
-    geometric centre's offset from the centre of mass (no terms: at it).
+    ``axle`` is in the body's axes (None: a sphere, or an ellipsoid when
+    ``semi_axes`` are given, along the body's axes); ``tube`` is a wheel's round
+    tyre (0: a thin wheel); ``centre`` is the geometric centre's offset from the
+    centre of mass (no terms: at it).
     """
 
     body: str
-    radius: sp.Expr
+    radius: sp.Expr | None
     axle: Triple | None
     centre: FrameVector
     on: str | None = None
+    tube: sp.Expr = sp.S.Zero
+    semi_axes: Triple | None = None
 
 
 @dataclass(frozen=True)

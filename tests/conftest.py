@@ -45,7 +45,7 @@ def require_tool(name: str) -> str:
 
 # Shipped systems whose equations are too large to print for reading
 # (gacli.algebra.readable.DISPLAY_NODES); tests/test_readable.py checks this list.
-LARGE = frozenset({"whipple_bicycle"})
+LARGE = frozenset({"whipple_bicycle", "toroidal_bicycle", "rattleback"})
 
 
 def evaluate(exprs, values):

@@ -131,7 +131,8 @@ class Geometry:
     def _body(self, decl: BodyDecl) -> Body | None:
         where = f"bodies.{decl.name}"
         mass = self.expression(decl.mass, f"{where}.mass", self.scopes.constant)
-        position = self._in_frames(decl.position, f"{where}.position", self.scopes.config)
+        position = self._in_frames(decl.position, f"{where}.position", self.scopes.config) \
+            if decl.position is not None else self._placed_position(decl)  # placed by its contact
         inertia = rotation = None
         if decl.is_rigid:
             inertia = self._inertia(decl, where)

@@ -29,7 +29,8 @@ def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
         _point(point.name, point.position, parsed, links)
     frames_of = {b.name: (b.frame.text if b.frame is not None else None) for b in decl.bodies}
     placements = tuple(
-        BodyPlacement(b.name, b.mass, _point(f"{b.name}@", d.position, parsed, links), frames_of[b.name], b.inertia)
+        BodyPlacement(b.name, b.mass, _point(f"{b.name}@", d.position, parsed, links) if d.position is not None
+                      else _placed(b.name, parsed, links), frames_of[b.name], b.inertia)
         for b, d in zip(bodies, decl.bodies))
     centres = {b.name: b.point for b in placements}
     rolling = tuple(_rolling(r, parsed, frames_of) for r in decl.rolling)
@@ -76,6 +77,17 @@ def _point(name: str, vector: VectorDecl, parsed: dict, links: list[PointLink]) 
     return parent
 
 
+def _placed(body: str, parsed: dict, links: list[PointLink]) -> str:
+    """A body placed by its rolling contact: the contact's links, then C − P and G − C along frames."""
+    contact, terms = parsed[("placed", body)]
+    parent = _point(f"{body}@contact", contact, parsed, links)
+    for i, (frame, components) in enumerate(terms):
+        label = f"{body}@" if i == len(terms) - 1 else f"{body}@#{i}"
+        links.append(PointLink(label, parent, frame, tuple(components)))
+        parent = label
+    return parent
+
+
 def _vector(vector: VectorDecl, parsed: dict, own: str | None) -> FrameVector:
     """A vector's terms; a list given in a body's own axes is along ``own`` (None: the body has no frame)."""
     if vector.point is not None:
@@ -89,7 +101,9 @@ def _rolling(decl, parsed: dict, frames_of: dict) -> RollingContact:
     own = frames_of.get(decl.body.text)
     axle = tuple(parsed[id(decl.axle)]) if decl.axle is not None else None
     centre = _vector(decl.centre, parsed, own) if decl.centre is not None else FrameVector(())
-    return RollingContact(decl.body.text, parsed[id(decl)], axle, centre, decl.on.text if decl.on is not None else None)
+    shape = parsed[id(decl)]  # gacli.loader.rolling_geometry.Shape
+    return RollingContact(decl.body.text, shape.radius, axle, centre, decl.on.text if decl.on is not None else None,
+                          shape.tube, shape.semi_axes)
 
 
 def _reaction(decl, load: Load) -> Load:

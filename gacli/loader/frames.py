@@ -214,12 +214,15 @@ def cross_form(form: sp.Matrix, vector: sp.Matrix) -> sp.Matrix:
     return out
 
 
-def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None) -> sp.Matrix:
+def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None,
+                  tube: sp.Expr = sp.S.Zero) -> sp.Matrix:
     """Where a wheel (axle ≠ None) or a sphere of ``radius`` touches the plane z = 0 below it.
 
     For a wheel the contact lies in the wheel's plane, straight "down" from
     the centre: along n − (n·a)a normalised, n the plane's normal. The wheel is
-    taken to be above the plane, so |cos| of its tilt is its cos.
+    taken to be above the plane, so |cos| of its tilt is its cos. A wheel with
+    a round tyre of radius ``tube`` (a torus, ``radius`` that of the circle of
+    the tube's centres) touches a further ``tube`` below that circle, along −n.
     """
     normal = sp.Matrix([0, 0, 1])
     if axle is None:
@@ -231,7 +234,7 @@ def contact_point(centre: sp.Matrix, radius: sp.Expr, axle: sp.Matrix | None) ->
     if sp.count_ops(square) <= _TRIGSIMP_OPS:
         square = sp.trigsimp(square)
     length = sp.sqrt(square).replace(sp.Abs, lambda arg: arg)
-    return centre - radius * along / length
+    return centre - radius * along / length - tube * normal
 
 
 def in_wheel_heading(rows: sp.Matrix, axle: sp.Matrix | None) -> sp.Matrix:

@@ -1,4 +1,4 @@
-"""Rolling declarations whose geometry is degenerate, refused before their rows are built.
+"""Rolling shapes, and declarations whose geometry is degenerate, refused before their rows are built.
 
 A wheel of radius 0, a zero axle or an axle along the plane's normal (a
 wheel lying flat) makes :func:`gacli.loader.frames.contact_point` divide by zero
@@ -9,7 +9,8 @@ the message of the problem, or "" when there is none.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 
 import sympy as sp
 
@@ -66,3 +67,60 @@ def _near_zero(expr: sp.Expr, point) -> bool:
     except UndefinedValue:
         return False
     return abs(value) <= 1e-12 * max(1, scale)
+
+
+@dataclass(frozen=True)
+class Shape:
+    """A rolling body's shape as parsed: a sphere (radius), a wheel (radius, axle), a torus
+    (radius, axle, tube) or an ellipsoid (semi-axes along the body's axes)."""
+
+    radius: sp.Expr | None
+    axle: sp.ImmutableMatrix | None = None  # in the body's axes, as written
+    tube: sp.Expr = sp.S.Zero
+    semi_axes: tuple[sp.Expr, sp.Expr, sp.Expr] | None = None
+
+
+def size_problem(value: sp.Expr, what: str, known: Mapping[sp.Symbol, float]) -> str:
+    """:func:`radius_problem` for any length that must be positive (a semi-axis, say)."""
+    problem = radius_problem(value, known)
+    if problem == NOT_POSITIVE:
+        return f"{what} must be positive: with one of 0 or less the body has no single contact point"
+    return problem.replace("the radius", what)
+
+
+def tube_problem(tube: sp.Expr, radius: sp.Expr, known: Mapping[sp.Symbol, float]) -> str:
+    """A negative tube, or one as large as the wheel (the torus would close over its axle and
+    the contact below the centre is no longer on the outer surface)."""
+    if tube.is_negative or tube.is_extended_real is False:
+        return "the tube radius must be 0 (a thin wheel) or positive"
+    if not (tube.free_symbols | radius.free_symbols) <= set(known):
+        return ""
+    try:
+        rho, r = float(evaluate(tube, known)[0]), float(evaluate(radius, known)[0])
+    except UndefinedValue:
+        return "the tube radius has no real value"
+    if rho < 0:
+        return "the tube radius must be 0 (a thin wheel) or positive"
+    if rho >= r:
+        return (f"the tube radius ({rho:g}) must be smaller than the wheel's radius ({r:g}), "
+                "the radius of the circle of the tube's centres")
+    return ""
+
+
+def ellipsoid_lift(normal: Sequence[sp.Expr], semi_axes: Sequence[sp.Expr]) -> sp.Matrix:
+    """The geometric centre from the contact, along the body's axes: E n / √(nᵀ E n),
+    E = diag(a², b², c²), n the plane's normal along the body's axes (the outward normal at
+    the contact is −n). A sphere's (a = b = c = r) is r n."""
+    if semi_axes[0] == semi_axes[1] == semi_axes[2]:
+        # A sphere: √(r² (n·n)) is |r| once n·n = 1 is seen, and |r| evaluates nowhere numerically.
+        return sp.Matrix([semi_axes[0] * x for x in normal])
+    squares = [s ** 2 for s in semi_axes]
+    height = sp.sqrt(sp.Add(*(e * x ** 2 for e, x in zip(squares, normal))))
+    return sp.Matrix([e * x / height for e, x in zip(squares, normal)])
+
+
+def ellipsoid_contact(dcm: sp.Matrix, semi_axes: Sequence[sp.Expr]) -> sp.Matrix:
+    """The contact from the geometric centre along the plane's axes, ``dcm`` the body's axes
+    in the plane's: −R E n_b / √(n_bᵀ E n_b), n_b = Rᵀ z the plane's normal in the body's axes."""
+    normal = [dcm[2, j] for j in range(3)]
+    return -(dcm * ellipsoid_lift(normal, semi_axes))

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from gacli.errors import Diagnostic
 from gacli.read.declare_bodies import read_bodies, read_loads
-from gacli.read.declare_frames import read_frames, read_points, read_rolling
+from gacli.read.declare_frames import read_frames, read_points
+from gacli.read.declare_rolling import check_placements, read_rolling
 from gacli.read.declare_symbols import read_constraints, read_independent, read_symbols
 from gacli.read.reader import Reader, describe
 from gacli.read.schema import FORMAT_VERSION, TOP_KEYS, SystemDecl
@@ -44,6 +45,7 @@ def read_declarations(source: SourceFile) -> tuple[SystemDecl | None, list[Diagn
         work=_optional_expression(reader, top, "work"),
         potential=_optional_expression(reader, top, "potential"),
     )
+    check_placements(reader, top, decl.bodies, decl.rolling)
     return decl, reader.diagnostics
 
 

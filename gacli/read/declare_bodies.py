@@ -28,15 +28,16 @@ def _body(reader: Reader, key: Scalar, node: Node, where: str) -> BodyDecl | Non
     fields = reader.mapping(node, where, BODY_KEYS)
     if not isinstance(node, Mapping):
         return None
-    for required in ("mass", "position"):
-        if required not in fields:
-            reader.error(node, where, f"missing required key '{required}'")
+    if "mass" not in fields:
+        reader.error(node, where, "missing required key 'mass'")
     if not _rigid_keys_consistent(reader, fields, where):
         return None
-    if "mass" not in fields or "position" not in fields:
+    if "mass" not in fields:
         return None
     mass = reader.expression(fields["mass"][1], f"{where}.mass")
-    position = reader.vector(fields["position"][1], f"{where}.position", (2, 3), point=True)
+    # Without one, a rolling contact's 'contact' places the body (declare_rolling.check_placements).
+    position = reader.vector(fields["position"][1], f"{where}.position", (2, 3), point=True) \
+        if "position" in fields else None
     inertia, rotation = _rigid_parts(reader, fields, where)
     frame = fields["frame"][1] if "frame" in fields else None
     if frame is not None and not reader.name(frame, f"{where}.frame"):
@@ -49,7 +50,7 @@ def _body(reader: Reader, key: Scalar, node: Node, where: str) -> BodyDecl | Non
                 reader.error(value, f"{where}.{option}", f"'{option}' needs a body with a 'frame' (its axes carry "
                                                         "the inertia to the centre)")
             return None
-    if mass is None or position is None:
+    if mass is None or ("position" in fields and position is None):
         return None
     return BodyDecl(
         name=key.text, node=key, mass=mass, position=position,

@@ -1,11 +1,11 @@
-"""The geometry bodies are placed in: the ``frames``, ``points`` and ``rolling`` sections."""
+"""The geometry bodies are placed in: the ``frames`` and ``points`` sections (``rolling``: declare_rolling)."""
 
 from __future__ import annotations
 
 import re
 
 from gacli.read.reader import IDENTIFIER, Reader, describe
-from gacli.read.schema import AXIS_NAMES, FRAME_KEYS, ROLLING_KEYS, FrameDecl, PointDecl, RollingDecl
+from gacli.read.schema import AXIS_NAMES, FRAME_KEYS, FrameDecl, PointDecl
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 
 
@@ -142,28 +142,3 @@ def read_points(reader: Reader, top: dict) -> tuple[PointDecl, ...]:
                 out.append(PointDecl(key.text, key, vector))
     return tuple(out)
 
-
-def read_rolling(reader: Reader, top: dict) -> tuple[RollingDecl, ...]:
-    """The ``rolling`` list: bodies rolling without slipping on the plane z = 0 of a frame."""
-    node = reader.section(top, "rolling", Sequence, "a list of rolling contacts")
-    if node is None:
-        return ()
-    out = []
-    for i, item in enumerate(node.items):
-        where = f"rolling[{i}]"
-        fields = reader.mapping(item, where, ROLLING_KEYS)
-        if not isinstance(item, Mapping):
-            continue
-        missing = [k for k in ("body", "radius") if k not in fields]
-        if missing:
-            reader.error(item, where, f"missing required key '{missing[0]}'")
-            continue
-        body = fields["body"][1]
-        radius = reader.expression(fields["radius"][1], f"{where}.radius")
-        axle = reader.vector(fields["axle"][1], f"{where}.axle", (3,)) if "axle" in fields else None
-        on = fields["on"][1] if "on" in fields else None
-        centre = reader.vector(fields["centre"][1], f"{where}.centre", (3,)) if "centre" in fields else None
-        if reader.name(body, f"{where}.body") and radius and ("axle" not in fields or axle) \
-                and (on is None or reader.name(on, f"{where}.on")) and ("centre" not in fields or centre):
-            out.append(RollingDecl(i, item, body, radius, axle, on, centre))
-    return tuple(out)

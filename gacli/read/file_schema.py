@@ -120,8 +120,16 @@ def _definitions() -> dict:
         "frame": _frame(),
         "body": _body(),
         "rolling": _closed({"body": _ref("name"), "radius": _ref("expression"), "axle": _vector((3,)),
-                            "centre": _vector((3,)), "on": _ref("name"), "description": _text()},
-                           ("body", "radius")),
+                            "tube": {**_ref("expression"), "description": "a wheel's round tyre: its tube's radius"},
+                            "semi_axes": {**_list((3,)), "description": "an ellipsoid's, along the body's axes"},
+                            "centre": _vector((3,)), "on": _ref("name"),
+                            "contact": _either(_ref("name"), _vector((3,)),
+                                               description="the contact point, which places the body"),
+                            "description": _text()},
+                           ("body",), oneOf=[{"required": ["radius"]},
+                                             {"required": ["semi_axes"], "not": {"anyOf": [
+                                                 {"required": ["axle"]}, {"required": ["tube"]}]}}],
+                           dependentSchemas={"tube": {"required": ["axle"]}}),
         "load": _load(),
     }
 
@@ -170,7 +178,8 @@ def _body() -> dict:
         "inertia_about": {"required": ["frame"]},
         "inertia_in": {"required": ["frame"]},
     }
-    return _closed(properties, ("mass", "position"), dependentSchemas=rigid)
+    # Without a position, a rolling contact's 'contact' places the body (checked by the reader).
+    return _closed(properties, ("mass",), dependentSchemas=rigid)
 
 
 def _load() -> dict:

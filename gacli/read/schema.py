@@ -25,7 +25,7 @@ QUASI_KEYS = ("description", "differential", "unit", "latex")
 BODY_KEYS = ("mass", "position", "inertia", "inertia_about", "inertia_in", "rotation", "frame", "description")
 LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
 FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "quaternion", "rates", "description")
-ROLLING_KEYS = ("body", "radius", "axle", "centre", "on", "description")
+ROLLING_KEYS = ("body", "radius", "axle", "tube", "semi_axes", "centre", "contact", "on", "description")
 VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "coincide", "description")
 AXIS_NAMES = ("x", "y", "z")
 SYMBOL_SECTIONS = ("parameters", "functions", "inputs", "coordinates", "quasi_coordinates")
@@ -86,7 +86,7 @@ class BodyDecl:
     name: str
     node: Scalar
     mass: Scalar
-    position: VectorDecl
+    position: VectorDecl | None  # None: placed by a rolling contact's 'contact'
     inertia: tuple[Scalar, ...] = ()
     inertia_node: Node | None = None
     rotation: tuple[Scalar, ...] = ()
@@ -125,15 +125,24 @@ class LoadDecl:
 @dataclass(frozen=True)
 class RollingDecl:
     """A body rolling without slipping on the plane z = 0 of frame ``on`` (N when absent),
-    its geometric centre at ``centre`` from its centre of mass (at it when absent)."""
+    its geometric centre at ``centre`` from its centre of mass (at it when absent).
+
+    The body is a sphere (``radius``), a thin wheel (``radius``, ``axle``), a torus
+    (``radius`` of the circle of tube centres, ``axle``, ``tube``) or an ellipsoid
+    (``semi_axes`` along its own axes). ``contact``, when given, is the contact
+    point's position on the plane, from which gacli places the body (which then
+    has no ``position``)."""
 
     index: int
     node: Node
     body: Scalar
-    radius: Scalar
+    radius: Scalar | None
     axle: VectorDecl | None = None
     on: Scalar | None = None
     centre: VectorDecl | None = None
+    tube: Scalar | None = None
+    semi_axes: VectorDecl | None = None
+    contact: VectorDecl | None = None
 
 
 @dataclass(frozen=True)

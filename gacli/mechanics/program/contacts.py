@@ -2,7 +2,9 @@
 
 A wheel (axle a along a frame axis) touches at o = −r (n − (n·a)a)/|n − (n·a)a|
 from its geometric centre, n = N.z, the wheel above the plane (as
-gacli.loader.frames.contact_point); a sphere at o = −r n. Everything is
+gacli.loader.frames.contact_point); a torus a further −ρ n; a sphere at
+o = −r n; an ellipsoid at o = −E n/√(nᵀ E n) along its own axes (its S is
+the body's frame, gacli.loader.rolling_geometry.ellipsoid_contact). Everything is
 formed in the wheel's *non-spinning frame* S: the highest frame reached
 from the body's by rotations about the axle, where o depends on the
 lean only. The material point at the contact moves with
@@ -38,8 +40,10 @@ class Contact:
     offset: tuple  # d, along S
     centre: tuple  # c along the body's axes
     o: tuple  # the contact from the geometric centre, along S
-    perp: tuple | None  # n − (n·a)a along S where it is not a constant direction
-    inverse: sp.Expr | None  # 1/|n − (n·a)a|
+    perp: tuple | None  # n − (n·a)a along S where it is not a constant direction (an ellipsoid's: E n)
+    inverse: sp.Expr | None  # 1/|n − (n·a)a| (an ellipsoid's: 1/√(nᵀ E n))
+    tube: sp.Expr = sp.S.Zero  # a torus's: o is a wheel's − ρ n
+    semi_axes: tuple | None = None  # an ellipsoid's (S is the body's frame)
 
 
 def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingContact,
@@ -55,9 +59,22 @@ def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingC
     fixed = not any(c.free_symbols & coordinates for c in link.components)
     point, offset = (link.parent, link.components) if link.frame == frame and fixed else (body.point, ZV)
     centre = rolling.centre.terms[0][1] if rolling.centre.terms else ZV
-    o, perp, inverse = _below(tree, frame, axis, rolling.radius)
+    if rolling.semi_axes is not None:
+        o, perp, inverse = _ellipsoid_below(tree, frame, rolling.semi_axes)
+    else:
+        o, perp, inverse = _below(tree, frame, axis, rolling.radius)
+        if rolling.tube != 0:
+            o = tree.tape.vec(add(o, scale(-rolling.tube, tree.nz(frame))))
     return Contact(body, rolling.radius, frame, axis, tuple(spins), point, tuple(offset), tuple(centre),
-                   o, perp, inverse)
+                   o, perp, inverse, rolling.tube, rolling.semi_axes)
+
+
+def _ellipsoid_below(tree: FrameTree, frame: str, semi_axes: tuple):
+    """(o, E n, 1/√(nᵀ E n)) along the body's axes, E = diag(a², b², c²): o = −E n/√(nᵀ E n)."""
+    n = tree.nz(frame)
+    en = tree.tape.vec([s ** 2 * x for s, x in zip(semi_axes, n)])
+    inverse = tree.tape.let(1 / sp.sqrt(dot(en, n)))
+    return tree.tape.vec(scale(-inverse, en)), en, inverse
 
 
 def _below(tree: FrameTree, frame: str, axis: int | None, radius: sp.Expr):
@@ -86,6 +103,20 @@ def centre_in_s(tree: FrameTree, c: Contact) -> tuple:
 
 def o_rate(tree: FrameTree, c: Contact, actual: Pass) -> tuple:
     """The rate of o's components along S: N.z is fixed, so its components turn as ṅ = n × ω_S."""
+    tape, n = tree.tape, tree.nz(c.frame)
+    if c.semi_axes is not None:
+        # o = −E n h⁻¹, h² = nᵀ E n: ȯ = h⁻³ (nᵀ E ṅ) E n − h⁻¹ E ṅ.
+        edot = tape.vec([s ** 2 * x for s, x in zip(c.semi_axes, cross(n, tree.omega(c.frame, actual)))])
+        along = tape.let(c.inverse ** 3 * dot(n, edot))
+        return tape.vec([along * e - c.inverse * d for e, d in zip(c.perp, edot)])
+    if c.tube != 0:
+        wheel = _wheel_o_rate(tree, c, actual)
+        return tape.vec(add(wheel, scale(-c.tube, cross(n, tree.omega(c.frame, actual)))))
+    return _wheel_o_rate(tree, c, actual)
+
+
+def _wheel_o_rate(tree: FrameTree, c: Contact, actual: Pass) -> tuple:
+    """The sphere's or thin wheel's part of :func:`o_rate`."""
     tape, n = tree.tape, tree.nz(c.frame)
     if c.axis is None:
         return tape.vec(scale(-c.radius, cross(n, tree.omega(c.frame, actual))))
