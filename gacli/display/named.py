@@ -199,7 +199,32 @@ def from_program(program, taken: set[str]) -> Named:
             name, about = namer.fresh(), ""
         shown[symbol] = name
         quantities.append(Quantity(name, value, about))
-    return short_lines(_outputs(program, shown, outputs_of, tuple(quantities)), namer)
+    return short_lines(_state_pieces(_outputs(program, shown, outputs_of, tuple(quantities)), namer), namer)
+
+
+def _state_pieces(named: Named, namer: _Namer) -> Named:
+    """Pieces over the state alone that the quantities repeat, each named once, first: a position
+    written in closed form (an ellipsoid placed by its contact, whose height √(nᵀE n) is in every
+    derivative of it) is differentiated in place, so its pieces recur from one quantity to the next."""
+    defined = {q.symbol for q in named.quantities}
+    exprs = [*(q.value for q in named.quantities), *(e for _, e in named.rates), *(e for _, e in named.mass),
+             *named.forcing]
+    replacements, reduced = shared_subexpressions(exprs, iter(lambda: namer.fresh(), None))
+    kept, back = [], {}
+    for symbol, value in replacements:
+        value = _through(value, back)
+        if is_inline(value) or _ops(value) <= INLINE_OPS or free_symbols([value]) & defined:
+            back[symbol] = value
+        else:
+            kept.append(Quantity(symbol, value))
+    if not kept:
+        return named
+    reduced = [_through(e, back) for e in reduced]
+    n, r, m = len(named.quantities), len(named.rates), len(named.mass)
+    quantities = [Quantity(q.symbol, e, q.about) for q, e in zip(named.quantities, reduced)]
+    return Named(tuple(kept + quantities), tuple((q, e) for (q, _), e in zip(named.rates, reduced[n:n + r])),
+                 tuple((key, e) for (key, _), e in zip(named.mass, reduced[n + r:n + r + m])),
+                 tuple(reduced[n + r + m:]), named.source)
 
 
 def _outputs(program, shown: dict, outputs_of: dict, quantities: tuple[Quantity, ...]) -> Named:

@@ -86,7 +86,7 @@ class Quaternions:
             if symbol is None or symbol.kind != "quasi":
                 why = f"'{name}' is {_KINDS.get(symbol.kind, 'a coordinate')}" if symbol else f"'{name}' is not declared"
                 self.error(node, place, f"{why}; a frame's rates are quasi-coordinates",
-                           f"declare it under quasi_coordinates without a differential: the frame gives it one")
+                           "declare it under quasi_coordinates without a differential: the frame gives it one")
                 return None
             if symbol.differential is not None:
                 self.error(node, place, f"the quasi-coordinate '{name}' has a differential of its own; "
