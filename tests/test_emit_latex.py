@@ -314,10 +314,13 @@ def _terms(block: str) -> list[str]:
 
 
 def sin_cos_pairs(text: str) -> list[str]:
-    """Terms c·sin²θ of one equation block that stand beside c·cos²θ, the same c: a pair that is c."""
+    """Terms c·sin²θ of one equation (a row of an align block) that stand beside c·cos²θ, the same c:
+    a pair that is c. Two rows are two expressions (I_xx = A cos²δ + …, I_yy = A sin²δ + …)."""
     pairs = []
-    for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S):
-        terms = set(_terms(block))
+    rows = [row for block in re.findall(r"\\begin\{align\*\}(.*?)\\end\{align\*\}", text, re.S)
+            for row in re.split(r"\\\\(?:\[[^\]]*\])?", block)]
+    for row in rows:
+        terms = set(_terms(row))
         for term in terms:
             for angle in re.findall(r"\\sin\^\{2\}\s*(\{[^{}]*\}|\{\\left\(.*?\\right\)\})", term):
                 twin = term.replace(rf"\sin^{{2}} {angle}", rf"\cos^{{2}} {angle}").replace(rf"\sin^{{2}}{angle}", rf"\cos^{{2}}{angle}")
