@@ -152,3 +152,14 @@ def test_a_chain_without_independent_rates_takes_the_program(monkeypatch):
 
     d = run_source(parse_source(text.encode(), "chain.yaml"), needs=PRINTOUT).derivation
     assert not d.closed and d.independent == ("a", "b")
+
+
+def test_check_without_verify_reads_a_large_system_s_program(monkeypatch):
+    # check's M, F and q̇ checks read the program's outputs as any printout does; verify alone
+    # needs the closed forms (gacli.pipeline.CLOSED).
+    import gacli.mechanics.equations as equations
+    from gacli.cli import app
+
+    monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
+    result = CliRunner().invoke(app, ["check", str(SYSTEMS / "whipple_bicycle.yaml")])
+    assert result.exit_code == 0, result.output

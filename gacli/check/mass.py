@@ -21,10 +21,10 @@ _UNDEFINED = (sp.zoo, sp.nan, sp.oo, -sp.oo)
 
 def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
     """What is known about M; each fault is ``findings.error(...)`` (a Diagnostic of the file)."""
-    M, F = derivation.mass_matrix, derivation.forcing
+    M, F, kinematic = _equations(derivation)
     system = derivation.system
     where = system.location
-    nodes = set(postorder([*M, *F, *(e for _, e in derivation.kinematic_equations)]))
+    nodes = set(postorder([*M, *F, *(e for _, e in kinematic)]))
     if any(node in nodes for node in _UNDEFINED):
         findings.error("the equations contain an undefined value (zoo or nan: a division by zero or a "
                        "logarithm of zero somewhere in the file)", "equations", location=where)
@@ -32,7 +32,7 @@ def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
         findings.error("the equations contain the imaginary unit I: M, F and the kinematic equations must be real",
                        "equations", location=where)
     symmetric = _symmetric(M, findings, where)
-    _zero_rows(derivation, findings)
+    _zero_rows(derivation, M, findings)
     values, missing = parameter_values(system)
     if missing:
         note = f"not checked: no value for {', '.join(missing)}"
@@ -40,10 +40,21 @@ def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
     return _positive_definite(system, M, values, symmetric, findings, where)
 
 
-def _zero_rows(derivation: Derivation, findings) -> None:
+def _equations(derivation: Derivation):
+    """M, F and q̇: the closed forms, or for a derivation by the program alone its outputs inlined
+    (expression graphs: walked by gacli.algebra.graph and evaluated numerically, never printed)."""
+    if derivation.closed:
+        return derivation.mass_matrix, derivation.forcing, derivation.kinematic_equations
+    code, k = derivation.code, derivation.k
+    entries = dict(code.mass_matrix)
+    M = sp.ImmutableMatrix(k, k, lambda i, j: entries.get((i, j), sp.S.Zero))
+    return M, sp.ImmutableMatrix(code.forcing), code.kinematic_equations
+
+
+def _zero_rows(derivation: Derivation, M, findings) -> None:
     """A row of M that is zero at every state: whatever the parameters, M is singular there and the
     rate's equation reads 0 = 0 (a coordinate that turns only a particle, say), so nothing can be solved."""
-    M, system = derivation.mass_matrix, derivation.system
+    system = derivation.system
     coordinates = {c.name: c.location for c in system.coordinates}
     for i, name in enumerate(derivation.independent):
         if all(M[i, j] == 0 for j in range(M.cols)):

@@ -19,7 +19,8 @@ from gacli.algebra.graph import expanded_terms, is_small
 from gacli.algebra.coerce import as_expr
 from gacli.numeric.zero import decide_zero, vanishes
 from gacli.model import Constraint, Form, QuasiCoordinate
-from gacli.read.schema import CoincidenceDecl, SymbolDecl, VelocityConstraintDecl
+from gacli.read.schema import CoincidenceDecl, GuideDecl, SymbolDecl, VelocityConstraintDecl
+from gacli.read.reader import did_you_mean
 from gacli.read.source import Scalar
 
 
@@ -65,6 +66,8 @@ class Forms:
         """The constraints one entry of ``constraints`` gives: one, or a coincidence's up to three."""
         if isinstance(decl, CoincidenceDecl):
             return self._coincidence(decl, f"constraints[{index}]")
+        if isinstance(decl, GuideDecl):
+            return self._guide(decl, f"constraints[{index}]")
         constraint = self._constraint(index, decl)
         return (constraint,) if constraint else ()
 
@@ -85,6 +88,30 @@ class Forms:
         if not out:
             self.error(decl.node, where, f"{names} are the same point wherever the system is: "
                                          "their coincidence constrains nothing")
+        return tuple(out)
+
+    def _guide(self, decl: GuideDecl, where: str) -> tuple[Constraint, ...]:
+        """The point's place from the frame's origin, along each of the frame's axes it may not move
+        along, is zero: a holonomic constraint each (eq. 14.1), as for a coincidence."""
+        place = f"{where}.{decl.key}"
+        point = self._point_named(decl.point, place)
+        frame = self.frames.get(decl.frame.text)
+        if frame is None:
+            self.error(decl.frame, place, f"'{decl.frame.text}' is not a frame", did_you_mean(decl.frame.text, self.frames))
+        if point is None or frame is None:
+            return ()
+        origin = frame.origin or (sp.S.Zero,) * 3
+        gap = [as_expr(p) - as_expr(o) for p, o in zip(point, origin)]
+        out = []
+        for axis in (a for a in range(3) if a not in decl.free):
+            across = sp.Add(*(frame.dcm[row, axis] * g for row, g in enumerate(gap)))
+            if decide_zero(across).zero:
+                continue
+            text = f"{decl.point.text} {decl.key.replace('_', ' ')} {decl.frame.text} (none along its {'xyz'[axis]} axis)"
+            out.append(self._holonomic(across, self.where_of(decl.node), text))
+        if not out:
+            self.error(decl.node, where, f"{decl.point.text} is on that {'line' if len(decl.free) == 1 else 'plane'} "
+                                         "wherever the system is: the constraint constrains nothing")
         return tuple(out)
 
     def _constraint(self, index: int, text) -> Constraint | None:

@@ -12,6 +12,7 @@ from gacli.read.schema import (
     SymbolDecl,
     VelocityConstraintDecl,
     CoincidenceDecl,
+    GuideDecl,
 )
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
@@ -100,6 +101,8 @@ def _constraint(reader: Reader, index: int, node: Node):
     fields = reader.mapping(node, where, VELOCITY_CONSTRAINT_KEYS)
     if "coincide" in fields:
         return _coincidence(reader, index, node, fields, where)
+    if "moves_along" in fields or "moves_in" in fields:
+        return _guide(reader, index, node, fields, where)
     if "velocity_of" not in fields or "along" not in fields:
         reader.error(node, where, "a velocity constraint needs 'velocity_of' (a point) and 'along' (a vector)")
         return None
@@ -122,6 +125,32 @@ def _coincidence(reader: Reader, index: int, node: Node, fields: dict, where: st
     if not all(reader.name(e, f"{where}.coincide") for e in ends.items):
         return None
     return CoincidenceDecl(index, node, tuple(ends.items))
+
+
+GUIDES = {"moves_along": (1, "an axis of the frame (x, y or z)"),
+          "moves_in": (2, "a plane of the frame named by two axes (xy, yz or zx)")}
+
+
+def _guide(reader: Reader, index: int, node: Node, fields: dict, where: str) -> GuideDecl | None:
+    """``moves_along: [P, F, x]`` or ``moves_in: [P, F, xy]``: a point on a line or in a plane of a frame."""
+    key = "moves_along" if "moves_along" in fields else "moves_in"
+    count, what = GUIDES[key]
+    if set(fields) - {key, "description"}:
+        reader.error(node, where, f"'{key}' stands alone: [point, frame, {'axis' if count == 1 else 'plane'}]")
+        return None
+    items = fields[key][1]
+    place = f"{where}.{key}"
+    if not isinstance(items, Sequence) or len(items.items) != 3:
+        reader.error(items, place, f"expected [point, frame, {what}], found {describe(items)}")
+        return None
+    point, frame, axes = items.items
+    if not (reader.name(point, place) and reader.name(frame, place)):
+        return None
+    text = axes.text if isinstance(axes, Scalar) else ""
+    if len(text) != count or len(set(text)) != count or not set(text) <= set("xyz"):
+        reader.error(axes, place, f"expected {what}, found {describe(axes)}")
+        return None
+    return GuideDecl(index, node, key, point, frame, tuple(sorted("xyz".index(c) for c in text)))
 
 
 def read_independent(reader: Reader, top: dict) -> tuple[Scalar, ...] | None:

@@ -26,7 +26,7 @@ BODY_KEYS = ("mass", "position", "inertia", "inertia_about", "inertia_in", "rota
 LOAD_KEYS = ("force", "at", "torque", "body", "reaction", "spring", "damper", "between", "length", "description")
 FRAME_KEYS = ("parent", "origin", "rotations", "sequence", "angles", "quaternion", "rates", "description")
 ROLLING_KEYS = ("body", "radius", "axle", "tube", "semi_axes", "centre", "contact", "on", "description")
-VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "coincide", "description")
+VELOCITY_CONSTRAINT_KEYS = ("velocity_of", "along", "coincide", "moves_along", "moves_in", "description")
 AXIS_NAMES = ("x", "y", "z")
 SYMBOL_SECTIONS = ("parameters", "functions", "inputs", "coordinates", "quasi_coordinates")
 
@@ -146,6 +146,19 @@ class RollingDecl:
 
 
 @dataclass(frozen=True)
+class GuideDecl:
+    """A point kept on a line (``moves_along``: a frame's axis) or in a plane (``moves_in``: two of its
+    axes) through the frame's origin: each component of its place across them is a holonomic constraint."""
+
+    index: int
+    node: Node
+    key: str
+    point: Scalar
+    frame: Scalar
+    free: tuple[int, ...]  # the frame's axes the point may move along
+
+
+@dataclass(frozen=True)
 class CoincidenceDecl:
     """Two points coincide (a loop closed at a joint): their N components agree, a holonomic constraint each."""
 
@@ -174,7 +187,7 @@ class SystemDecl:
     description: str = ""
     reference: str = ""
     symbols: tuple[SymbolDecl, ...] = ()
-    constraints: tuple[Scalar | VelocityConstraintDecl | CoincidenceDecl, ...] = ()
+    constraints: tuple[Scalar | VelocityConstraintDecl | CoincidenceDecl | GuideDecl, ...] = ()
     independent: tuple[Scalar, ...] | None = None
     independent_node: Node | None = None
     frames: tuple[FrameDecl, ...] = ()
