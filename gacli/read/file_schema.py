@@ -94,25 +94,7 @@ def _definitions() -> dict:
             {"type": "string", "maxLength": MAX_LENGTH, "pattern": EXPRESSION_PATTERN},
             description="an expression: numbers, declared names, t, pi, + - * / **, sin cos tan asin acos "
                         "atan atan2 sinh cosh tanh exp log sqrt abs sign, dot(x), ddot(x), differentials dx, dt"),
-        "constraint": _either(
-            {"type": "number"},
-            {"type": "string", "maxLength": MAX_LENGTH, "pattern": CONSTRAINT_PATTERN},
-            _closed({"velocity_of": _ref("name"), "along": _vector((2, 3)), "description": _text()},
-                    ("velocity_of", "along"), description="a knife edge: the point's velocity has no "
-                                                          "component along the vector"),
-            _closed({"coincide": {"type": "array", "items": _ref("name"), "minItems": 2, "maxItems": 2},
-                     "description": _text()}, ("coincide",),
-                    description="a loop closed at a joint: the two points are at one place"),
-            _closed({"moves_along": {"type": "array", "minItems": 3, "maxItems": 3,
-                                     "prefixItems": [_ref("name"), _ref("name"), {"enum": ["x", "y", "z"]}]},
-                     "description": _text()}, ("moves_along",),
-                    description="a point on a frame's axis through its origin: [point, frame, axis]"),
-            _closed({"moves_in": {"type": "array", "minItems": 3, "maxItems": 3,
-                                  "prefixItems": [_ref("name"), _ref("name"),
-                                                  {"enum": ["xy", "yx", "yz", "zy", "zx", "xz"]}]},
-                     "description": _text()}, ("moves_in",),
-                    description="a point in a frame's plane through its origin: [point, frame, plane]"),
-            description="a Pfaffian constraint 'lhs = rhs' (or one expression, meaning '= 0')"),
+        "constraint": _constraint(),
         "vector_in_frames": {
             "type": "object", "minProperties": 1, "propertyNames": _ref("name"),
             "properties": {"from": _ref("name")}, "additionalProperties": _list((3,)),
@@ -141,6 +123,29 @@ def _definitions() -> dict:
                            dependentSchemas={"tube": {"required": ["axle"]}}),
         "load": _load(),
     }
+
+
+def _constraint() -> dict:
+    """A constraint: a Pfaffian form, or one of the holonomic and knife-edge mappings."""
+    return _either(
+        {"type": "number"},
+        {"type": "string", "maxLength": MAX_LENGTH, "pattern": CONSTRAINT_PATTERN},
+        _closed({"velocity_of": _ref("name"), "along": _vector((2, 3)), "description": _text()},
+                ("velocity_of", "along"), description="a knife edge: the point's velocity has no "
+                                                      "component along the vector"),
+        _closed({"coincide": {"type": "array", "items": _ref("name"), "minItems": 2, "maxItems": 2},
+                 "description": _text()}, ("coincide",),
+                description="a loop closed at a joint: the two points are at one place"),
+        _closed({"moves_along": {"type": "array", "minItems": 3, "maxItems": 3,
+                                 "prefixItems": [_ref("name"), _ref("name"), {"enum": ["x", "y", "z"]}]},
+                 "description": _text()}, ("moves_along",),
+                description="a point on a frame's axis through its origin: [point, frame, axis]"),
+        _closed({"moves_in": {"type": "array", "minItems": 3, "maxItems": 3,
+                              "prefixItems": [_ref("name"), _ref("name"),
+                                              {"enum": ["xy", "yx", "yz", "zy", "zx", "xz"]}]},
+                 "description": _text()}, ("moves_in",),
+                description="a point in a frame's plane through its origin: [point, frame, plane]"),
+        description="a Pfaffian constraint 'lhs = rhs' (or one expression, meaning '= 0')")
 
 
 def _frame() -> dict:
