@@ -66,9 +66,8 @@ def _boundary():
     try:
         yield
     except SystemFileError as exc:
-        from gacli.display import console
-
         from gacli.check.report import capped
+        from gacli.display import console
 
         # As gacli check's reports: a file of aliases can hold thousands; the count is located too.
         console.diagnostics(capped(exc.diagnostics, MAX_DIAGNOSTICS))
@@ -83,8 +82,7 @@ def _boundary():
         else:
             console.error(str(exc))
         raise typer.Exit(code=1) from None
-    except MemoryError:
-        # Outside a budget (which names the step), still one message, not a traceback.
+    except MemoryError:  # outside a budget (which names the step): still one message, not a traceback
         from gacli.display import console
 
         console.error("ran out of memory (the system is too large for this machine)")
@@ -100,18 +98,18 @@ def _budget(path: Path, seconds: float):
         yield state
 
 
-def _derive(path: Path, state, needs: tuple[bool, bool] | None = None):
+def _derive(path: Path, state, needs: str | None = None):
     """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step;
-    ``needs`` is (for generated code, with reactions) for derive's outputs, None for the closed forms."""
+    ``needs`` is what the command reads of the equations: gacli.pipeline's CODE, PRINTOUT or CLOSED (None)."""
     from gacli.display import console
-    from gacli.pipeline import CLOSED, needs_of, run
+    from gacli.pipeline import CLOSED, run
 
     with console.progress(f"deriving {path.name}") as spinner:
         def step(name: str) -> None:
             state(name)
             spinner(name)
 
-        return run(path, needs=CLOSED if needs is None else needs_of(*needs), progress=step).derivation
+        return run(path, needs=needs or CLOSED, progress=step).derivation
 
 
 @app.callback()
@@ -147,7 +145,8 @@ def derive(
 
             refuse_special(output)
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state, needs=(format in CODE_FORMATS, reactions))
+            from gacli.pipeline import needs_of
+            derivation = _derive(file, state, needs=needs_of(format in CODE_FORMATS, reactions))
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)
@@ -193,7 +192,8 @@ def gibbs(file: SystemPath, timeout: Timeout = DEFAULT_TIMEOUT) -> None:
 
     with _boundary():
         with _budget(file, timeout) as state:
-            derivation = _derive(file, state, needs=(False, False))
+            from gacli.pipeline import PRINTOUT
+            derivation = _derive(file, state, needs=PRINTOUT)
             state("writing the Gibbs function")
             sections = tuple(gibbs_report(derivation))
         console.sections("", sections)
@@ -348,7 +348,8 @@ def linearize(
         names = state_names(states or "", "--states")
         sweep_usage(sweep, symbolic)
         with _budget(file, timeout) as state, notes_from_warnings():
-            derivation = _derive(file, state)
+            from gacli.pipeline import CODE
+            derivation = _derive(file, state, needs=None if symbolic else CODE)
             state("linearizing")
             if symbolic:
                 lines = symbolic_lines(derivation, pairs, overrides, names)

@@ -139,8 +139,10 @@ def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_T
     """
     from gacli.display import console
 
+    from gacli.pipeline import PRINTOUT  # a system too large to print is refused without its closed forms
+
     with _SHARED["boundary"](), _SHARED["budget"](file, timeout) as state:
-        derivation = _SHARED["derive"](file, state)
+        derivation = _SHARED["derive"](file, state, PRINTOUT)
         state("solving for the steady motions")
         from gacli.steady.motions import steady_motions
         from gacli.steady.report import motions_text
@@ -162,8 +164,10 @@ def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "tex
     """
     from gacli.display import console
 
+    from gacli.pipeline import PRINTOUT
+
     with _SHARED["boundary"](), usage_errors_here(), _SHARED["budget"](file, timeout) as state:
-        derivation = _SHARED["derive"](file, state)
+        derivation = _SHARED["derive"](file, state, PRINTOUT)
         from gacli.steady.integrals import parse_candidate
 
         expressions = [parse_candidate(derivation, text) for text in candidate or ()]

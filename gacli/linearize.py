@@ -168,6 +168,16 @@ def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
     return values
 
 
+def _code_equations(derivation: Derivation) -> tuple[list, list, list]:
+    """q̇, M (row-major, k²) and F as generated code computes them (Derivation.code): the program of
+    a derivation for code alone too, so numeric linearization never needs the closed forms."""
+    code, k = derivation.code, derivation.k
+    M = [sp.S.Zero] * (k * k)
+    for (i, j), entry in code.mass_matrix:
+        M[i * k + j] = entry
+    return [e for _, e in code.kinematic_equations], M, list(code.forcing)
+
+
 @dataclass(frozen=True)
 class _Equations:
     """q̇, M and F as functions of the point (x, r), the parameters put in, and how to differentiate them.
@@ -192,8 +202,8 @@ class _Equations:
         from gacli.numeric import Program
         from gacli.numeric.evaluator import MPMATH
 
-        kin = [e for _, e in derivation.kinematic_equations]
-        exprs = kin + list(derivation.mass_matrix) + list(derivation.forcing)
+        kin, M, F = _code_equations(derivation)
+        exprs = kin + M + F
         fixed = {sym: values[sym.name] for sym in lay.parameter_symbols if sym.name in values}
         fixed[sp.Symbol("t", real=True)] = 0.0
         arguments = tuple(lay.state_symbols) + tuple(lay.r_symbols)

@@ -163,3 +163,18 @@ def test_check_without_verify_reads_a_large_system_s_program(monkeypatch):
     monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
     result = CliRunner().invoke(app, ["check", str(SYSTEMS / "whipple_bicycle.yaml")])
     assert result.exit_code == 0, result.output
+
+
+def test_numeric_linearization_and_refusals_read_the_program(monkeypatch):
+    # linearize (and its --sweep) compiles q̇, M and F as generated code computes them; steady and
+    # integrals refuse a system too large to print before forming what they would refuse.
+    import gacli.mechanics.equations as equations
+    from gacli.cli import app
+
+    monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
+    bicycle = str(SYSTEMS / "whipple_bicycle.yaml")
+    result = CliRunner().invoke(app, ["linearize", bicycle, "--at", "dot(wheel_R)=-20"])
+    assert result.exit_code == 0, result.output
+    for command in ("steady", "integrals"):
+        result = CliRunner().invoke(app, [command, bicycle])
+        assert result.exit_code == 1 and "too large for symbolic work" in result.output, result.output

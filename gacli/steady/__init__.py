@@ -17,7 +17,8 @@ def require_small(derivation, what: str) -> None:
     """Refuse symbolic work on equations too large to print (the bicycle): it would not end."""
     from gacli.algebra.readable import displayable
 
-    if not displayable(derivation):
+    # A derivation for code alone (a program of PROGRAM_ALONE operations or more) has no closed forms.
+    if not derivation.closed or not displayable(derivation):
         raise SteadyError(f"{what}: the equations of this system are too large for symbolic work "
                           "(millions of terms as trees); 'gacli linearize --sweep' studies its stability "
                           "numerically")

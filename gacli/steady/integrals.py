@@ -170,14 +170,20 @@ def _det_and_adjugate_times(M: sp.Matrix, F: sp.Matrix) -> tuple[sp.Expr, list[s
     the connected parts of its pattern of nonzero entries; for M =
     diag(B_1, ..., B_n), det M = Π det B_j and adj(M) = diag(adj(B_i) Π_{j≠i} det B_j).
     """
+    from sympy.matrices.utilities import dotprodsimp
+
     blocks = _blocks(M)
-    dets = [M.extract(b, b).det(method="berkowitz") for b in blocks]
-    out: list[sp.Expr] = [sp.S.Zero] * M.rows
-    for i, block in enumerate(blocks):
-        others = sp.Mul(*(d for j, d in enumerate(dets) if j != i))
-        part = M.extract(block, block).adjugate(method="berkowitz") * F.extract(block, [0])
-        for row, value in zip(block, part):
-            out[row] = others * value
+    # SymPy expands every product of a small det or adjugate (its intermediate "dotprodsimp"): M of a
+    # body in Euler parameters holds (q0² + q1² + q2² + q3²)², and the expansions took 5 minutes for
+    # one 3×3 block. The products as formed are what the zero test needs.
+    with dotprodsimp(False):
+        dets = [M.extract(b, b).det(method="berkowitz") for b in blocks]
+        out: list[sp.Expr] = [sp.S.Zero] * M.rows
+        for i, block in enumerate(blocks):
+            others = sp.Mul(*(d for j, d in enumerate(dets) if j != i))
+            part = M.extract(block, block).adjugate(method="berkowitz") * F.extract(block, [0])
+            for row, value in zip(block, part):
+                out[row] = others * value
     return sp.Mul(*dets), out
 
 
