@@ -67,7 +67,7 @@ def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
 def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     tape, tree = motion.tape, motion.tree
     tape.stage = "partials"
-    homes = tuple(_home(motion, u.point, p) for p in passes.partial)
+    homes = tuple(motion.home(u.point, p) for p in passes.partial)
     # From each home along u's frame: one merged turn, not a turn per link of the chain.
     V = [motion.velocity(h, p, u.frame) for h, p in zip(homes, passes.partial)]
     W = [tree.omega(u.frame, p) for p in passes.partial] if u.rigid else []
@@ -104,19 +104,6 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
     if inertia is not None:
         _rotation_forcing(motion, u, m, inertia, lam, loads, passes, sums)
-
-
-def _home(motion: Motion, point: str | None, rates: Pass) -> str | None:
-    """The highest point of ``point``'s chain whose velocity for the pass is the point's own, turned:
-    the links below it add nothing for these rates (a chain's far link, for the speed of a joint
-    above it). Its velocity along its own frame is the partial velocity at its simplest."""
-    while point is not None and point != motion.root:
-        link = motion.links[point]
-        own = add(cross(motion.tree.omega(link.frame, rates), link.components), motion._moving(link, rates))
-        if link.parent is None or any(c != 0 for c in own):
-            break
-        point = link.parent
-    return point
 
 
 def _home_dot(motion: Motion, first: tuple[str | None, Pass], second: tuple[str | None, Pass]) -> sp.Expr:

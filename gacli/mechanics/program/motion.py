@@ -65,6 +65,18 @@ class Motion:
         v = add(parent, cross(self.tree.omega(link.frame, rates), link.components), self._moving(link, rates))
         return self.tape.vec(v, name=None if zero_root else ("v", point, rates.key, link.frame)), link.frame
 
+    def home(self, point: str | None, rates: Pass) -> str | None:
+        """The highest point of ``point``'s chain whose velocity for the pass is the point's own, turned:
+        the links below it add nothing for these rates (a chain's far link, for the speed of a joint
+        above it). Its velocity along its own frame is the partial velocity at its simplest."""
+        while point is not None and point != self.root:
+            link = self.links[point]
+            own = add(cross(self.tree.omega(link.frame, rates), link.components), self._moving(link, rates))
+            if link.parent is None or any(c != 0 for c in own):
+                break
+            point = link.parent
+        return point
+
     def _moving(self, link: PointLink, rates: Pass) -> tuple:
         """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q."""
         return tuple(sp.Add(*(sp.diff(x, s) * rates.rate(q) for q, s in self.coordinates.items() if x.has(s)))
