@@ -44,7 +44,7 @@ def read(path: str | Path) -> SourceFile:
 
 
 # What a command reads of the derivation, which decides how much of it is formed.
-CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, linearize, --reactions, ...)
+CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, --reactions, linearize --symbolic, ...)
 CODE = "code"  # q̇, M and F as generated code computes them
 PRINTOUT = "printout"  # q̇, M and F as derive, gibbs and LaTeX print them, with the count of the rows
 
