@@ -79,16 +79,9 @@ class Forms:
             return ()
         a, b = ends
         names = " and ".join(e.text for e in decl.ends)
-        out = []
-        for axis, (x, y) in zip("xyz", zip(a, b)):
-            gap = as_expr(y) - as_expr(x)
-            if decide_zero(gap).zero:
-                continue
-            out.append(self._holonomic(gap, self.where_of(decl.node), f"{names} coincide along N's {axis} axis"))
-        if not out:
-            self.error(decl.node, where, f"{names} are the same point wherever the system is: "
-                                         "their coincidence constrains nothing")
-        return tuple(out)
+        gaps = {f"{names} coincide along N's {axis} axis": as_expr(y) - as_expr(x) for axis, x, y in zip("xyz", a, b)}
+        return self._holonomic_rows(gaps, decl.node, where, f"{names} are the same point wherever the system is: "
+                                                           "their coincidence constrains nothing")
 
     def _guide(self, decl: GuideDecl, where: str) -> tuple[Constraint, ...]:
         """The point's place from the frame's origin, along each of the frame's axes it may not move
@@ -102,17 +95,21 @@ class Forms:
             return ()
         origin = frame.origin or (sp.S.Zero,) * 3
         gap = [as_expr(p) - as_expr(o) for p, o in zip(point, origin)]
-        out = []
-        for axis in (a for a in range(3) if a not in decl.free):
-            across = sp.Add(*(frame.dcm[row, axis] * g for row, g in enumerate(gap)))
-            if decide_zero(across).zero:
-                continue
-            text = f"{decl.point.text} {decl.key.replace('_', ' ')} {decl.frame.text} (none along its {'xyz'[axis]} axis)"
-            out.append(self._holonomic(across, self.where_of(decl.node), text))
+        said = f"{decl.point.text} {decl.key.replace('_', ' ')} {decl.frame.text}"
+        gaps = {f"{said} (none along its {'xyz'[axis]} axis)": sp.Add(*(frame.dcm[row, axis] * g for row, g in enumerate(gap)))
+                for axis in range(3) if axis not in decl.free}
+        return self._holonomic_rows(gaps, decl.node, where, f"{decl.point.text} is on that "
+                                    f"{'line' if len(decl.free) == 1 else 'plane'} wherever the system is: "
+                                    "the constraint constrains nothing")
+
+    def _holonomic_rows(self, gaps: dict[str, sp.Expr], node, where: str, idle: str) -> tuple[Constraint, ...]:
+        """A holonomic constraint for each gap that is not identically zero (a coincidence's or a guide's
+        components); ``idle`` is the error when none is left."""
+        out = tuple(self._holonomic(gap, self.where_of(node), text)
+                    for text, gap in gaps.items() if not decide_zero(gap).zero)
         if not out:
-            self.error(decl.node, where, f"{decl.point.text} is on that {'line' if len(decl.free) == 1 else 'plane'} "
-                                         "wherever the system is: the constraint constrains nothing")
-        return tuple(out)
+            self.error(node, where, idle)
+        return out
 
     def _constraint(self, index: int, text) -> Constraint | None:
         where = f"constraints[{index}]"
