@@ -64,17 +64,25 @@ def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
     return sp.Add(*(s * motion.tree.rate(e, rates) for e, s in wheel.edges))
 
 
+def translation_frame(motion: Motion, u: Unit) -> str:
+    """The frame V_r·(f − m a_rest) is formed in: the one the unit's point is written in, where its
+    velocity is formed. A free body at [x, y, z] in N under a force along N keeps both in N; in its own
+    frame they were turned there and back (R Rᵀ, which the program does not know is I)."""
+    return motion.frame_of(u.point) if u.point is not None else u.frame
+
+
 def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     tape, tree = motion.tape, motion.tree
     tape.stage = "partials"
     homes = tuple(motion.home(u.point, p) for p in passes.partial)
-    # From each home along u's frame: one merged turn, not a turn per link of the chain.
-    V = [motion.velocity(h, p, u.frame) for h, p in zip(homes, passes.partial)]
+    # From each home along the point's own frame: one merged turn, not a turn per link of the chain.
+    along = translation_frame(motion, u)
+    V = [motion.velocity(h, p, along) for h, p in zip(homes, passes.partial)]
     W = [tree.omega(u.frame, p) for p in passes.partial] if u.rigid else []
     sigma = [[_sigma(motion, w, p) for p in passes.partial] for w in u.wheels]
     tape.stage = "rest"
-    a_rest = tape.vec(add(motion.acceleration0(u.point, passes.actual, u.frame),
-                          motion.velocity(u.point, passes.gamma, u.frame)))
+    a_rest = tape.vec(add(motion.acceleration0(u.point, passes.actual, along),
+                          motion.velocity(u.point, passes.gamma, along)))
     omega = alpha = None
     if u.rigid:
         omega = tree.omega(u.frame, passes.actual)
@@ -99,7 +107,7 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     if inertia is not None:
         _rotation_mass(motion, u, m, inertia, lam, sums)
     tape.stage = "F"
-    effective = tape.vec(add(loads.resultant(motion.tree, u.frame), scale(-mass, m.a_rest)))
+    effective = tape.vec(add(loads.resultant(motion.tree, translation_frame(motion, u)), scale(-mass, m.a_rest)))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
     if inertia is not None:
