@@ -18,7 +18,9 @@ def require_small(derivation, what: str) -> None:
     from gacli.algebra.readable import displayable
 
     # A derivation for code alone (a program of PROGRAM_ALONE operations or more) has no closed forms.
-    if not derivation.closed or not displayable(derivation):
-        raise SteadyError(f"{what}: the equations of this system are too large for symbolic work "
-                          "(millions of terms as trees); 'gacli linearize --sweep' studies its stability "
-                          "numerically")
+    if derivation.closed and displayable(derivation):
+        return
+    size = (f"{derivation.code.operations:,} operations even as generated code computes them" if not derivation.closed
+            else "millions of terms as trees")
+    raise SteadyError(f"{what}: the equations of this system are too large for symbolic work ({size}); "
+                      "'gacli linearize --sweep' studies its stability numerically")
