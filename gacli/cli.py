@@ -14,7 +14,9 @@ from typing import Annotated, Optional
 
 import typer
 
-from gacli.cli_help import Group, choice, code_formats, derive_usage, example, formats, plain_report, show_version
+from gacli.cli_help import (
+    Group, SystemPath, choice, code_formats, derive_usage, example, formats, plain_report, show_version,
+)
 from gacli.cli_options import usage_errors
 from gacli.cli_steady import SweepOption, register as register_steady
 from gacli.cli_sweep import register as register_sweep
@@ -38,9 +40,6 @@ CODE_FORMATS = code_formats()
 # a test checks the two agree.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 
-SystemPath = Annotated[Path, typer.Argument(
-    metavar="FILE", help="A system file (YAML), or - for standard input.", dir_okay=False, allow_dash=True,
-    callback=lambda value: _existing(value))]
 # The same budget as gacli check's --timeout (gacli.budget); the literals are
 # here so that --help does not import SymPy. A test checks they agree.
 DEFAULT_TIMEOUT = 120.0
@@ -49,13 +48,6 @@ MAX_DIAGNOSTICS = 100
 Timeout = Annotated[float, typer.Option(
     "--timeout", min=0, metavar="SECONDS", help="Seconds allowed for the whole command, past which it stops with "
     "'ran out of time in the step ...' (0: no limit).")]
-
-
-def _existing(path: Path) -> Path:
-    """The file argument: ``-`` (standard input) or a path that exists, else a usage error (exit 2)."""
-    if str(path) != "-" and not path.exists():
-        raise typer.BadParameter(f"File '{path}' does not exist.")
-    return path
 
 
 @contextlib.contextmanager

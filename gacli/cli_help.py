@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
 import typer
 from typer.core import TyperArgument, TyperCommand, TyperGroup
@@ -119,3 +119,16 @@ def plain_report(title: str, sections) -> str:
     for section in sections:
         lines += ["", printable(section.title), *(f"  {printable(line)}" for line in section.lines)]
     return "\n".join(lines) + "\n"
+
+
+def existing(path: Path) -> Path:
+    """The file argument: ``-`` (standard input) or a path that exists, else a usage error (exit 2)."""
+    if str(path) != "-" and not path.exists():
+        raise typer.BadParameter(f"File '{path}' does not exist.")
+    return path
+
+
+# The FILE of every command that reads one system file once (gacli.pipeline reads - as standard input).
+SystemPath = Annotated[Path, typer.Argument(
+    metavar="FILE", help="A system file (YAML), or - for standard input.", dir_okay=False, allow_dash=True,
+    callback=existing)]

@@ -9,12 +9,11 @@ imports ``gacli.cli``. Nothing here imports SymPy at import time.
 from __future__ import annotations
 
 from collections.abc import Callable
-from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
-from gacli.cli_help import choice
+from gacli.cli_help import SystemPath, choice
 
 STEADY_FORMATS = ("text", "latex", "json")
 _SWEEP_POINTS = 101
@@ -110,7 +109,6 @@ def _complex(value: complex) -> str:
 
 
 _SHARED: dict[str, Callable] = {}
-_File = Annotated[Path, typer.Argument(metavar="FILE", help="A system file (YAML).", dir_okay=False, exists=True)]
 _Format = Annotated[str, typer.Option(
     "--format", metavar="FORMAT", callback=choice("a format", lambda: STEADY_FORMATS),
     help="text, latex or json.")]
@@ -129,7 +127,7 @@ def register(app: typer.Typer, example: Callable, boundary: Callable, budget: Ca
     app.command(**example('gacli integrals systems/spinning_top.yaml --candidate "C*dot(q)"'))(integrals)
 
 
-def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
+def steady(file: SystemPath, format_: _Format = "text", timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
     """Find the families of steady motions.
 
     Each with its free values and the conditions it needs.
@@ -151,7 +149,7 @@ def steady(file: _File, format_: _Format = "text", timeout: _Timeout = DEFAULT_T
     console.raw(text)
 
 
-def integrals(file: _File, candidate: _Candidate = None, format_: _Format = "text",
+def integrals(file: SystemPath, candidate: _Candidate = None, format_: _Format = "text",
               timeout: _Timeout = DEFAULT_TIMEOUT) -> None:
     """List the first integrals and check candidates.
 

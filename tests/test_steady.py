@@ -84,3 +84,13 @@ def test_latex_format_is_amsmath():
     assert result.exit_code == 0, result.output
     assert result.output.count("\\begin{align*}") == result.output.count("\\end{align*}") == 3
     assert "\\dot{\\varphi} &= " in result.output    # the file's latex: for spin
+
+
+def test_steady_reads_standard_input_and_locates_its_refusal():
+    # As every command that reads one system file: '-' is standard input, and a refusal names the file.
+    disk = (SYSTEMS / "rolling_disk.yaml").read_text()
+    result = CliRunner().invoke(app, ["steady", "-"], input=disk)
+    assert result.exit_code == 0 and "family 1" in result.output, result.output
+    bicycle = CliRunner().invoke(app, ["integrals", str(SYSTEMS / "whipple_bicycle.yaml")])
+    assert bicycle.exit_code == 1
+    assert f"{SYSTEMS / 'whipple_bicycle.yaml'}:1:1: error: integrals: " in bicycle.output, bicycle.output

@@ -6,11 +6,11 @@
 ``motions`` (steady families).
 """
 
-from gacli.errors import GacliError
+from gacli.errors import Diagnostic, SystemFileError
 
 
-class SteadyError(GacliError, ValueError):
-    """A system or a request these tools cannot answer (one message, exit code 1)."""
+class SteadyError(SystemFileError):
+    """A system these tools cannot answer for: one message located at its file, exit code 1."""
 
 
 def require_small(derivation, what: str) -> None:
@@ -22,5 +22,6 @@ def require_small(derivation, what: str) -> None:
         return
     size = (f"{derivation.code.operations:,} operations even as generated code computes them" if not derivation.closed
             else "millions of terms as trees")
-    raise SteadyError(f"{what}: the equations of this system are too large for symbolic work ({size}); "
-                      "'gacli linearize --sweep' studies its stability numerically")
+    message = (f"{what}: the equations of this system are too large for symbolic work ({size}); "
+               "'gacli linearize --sweep' studies its stability numerically")
+    raise SteadyError([Diagnostic(derivation.system.location, message)])
