@@ -171,11 +171,8 @@ def _parameter_values(lay, overrides: Mapping[str, float]) -> dict[str, float]:
 def _code_equations(derivation: Derivation) -> tuple[list, list, list]:
     """q̇, M (row-major, k²) and F as generated code computes them (Derivation.code): the program of
     a derivation for code alone too, so numeric linearization never needs the closed forms."""
-    code, k = derivation.code, derivation.k
-    M = [sp.S.Zero] * (k * k)
-    for (i, j), entry in code.mass_matrix:
-        M[i * k + j] = entry
-    return [e for _, e in code.kinematic_equations], M, list(code.forcing)
+    code = derivation.code
+    return [e for _, e in code.kinematic_equations], list(code.dense_mass_matrix()), list(code.forcing)
 
 
 @dataclass(frozen=True)

@@ -45,10 +45,8 @@ def _equations(derivation: Derivation):
     (expression graphs: walked by gacli.algebra.graph and evaluated numerically, never printed)."""
     if derivation.closed:
         return derivation.mass_matrix, derivation.forcing, derivation.kinematic_equations
-    code, k = derivation.code, derivation.k
-    entries = dict(code.mass_matrix)
-    M = sp.ImmutableMatrix(k, k, lambda i, j: entries.get((i, j), sp.S.Zero))
-    return M, sp.ImmutableMatrix(code.forcing), code.kinematic_equations
+    code = derivation.code
+    return code.dense_mass_matrix(), sp.ImmutableMatrix(code.forcing), code.kinematic_equations
 
 
 def _zero_rows(derivation: Derivation, M, findings) -> None:

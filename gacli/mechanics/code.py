@@ -49,6 +49,11 @@ class CodeEquations:
     forcing: tuple[sp.Expr, ...]
     operations: int  # with every repeated subexpression computed once (gacli.algebra.graph.operations)
 
+    def dense_mass_matrix(self) -> sp.ImmutableMatrix:
+        """M as a k × k matrix, zero where code stores no entry."""
+        k, entries = len(self.forcing), dict(self.mass_matrix)
+        return sp.ImmutableMatrix(k, k, lambda i, j: entries.get((i, j), sp.S.Zero))
+
     @property
     def shared(self) -> bool:
         """Whether the expressions are graphs that only :func:`shared_subexpressions` may walk."""

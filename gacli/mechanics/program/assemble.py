@@ -57,7 +57,8 @@ class UnitMotion:
     omega: tuple
     a_rest: tuple
     alpha_rest: tuple
-    homes: tuple  # per speed, the point whose velocity V is, turned (_home)
+    homes: tuple  # per speed, the point whose velocity V is, turned (Motion.home)
+    frame: str  # the frame V and a_rest are along (translation_frame)
 
 
 def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
@@ -87,7 +88,7 @@ def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     if u.rigid:
         omega = tree.omega(u.frame, passes.actual)
         alpha = tape.vec(add(tree.alpha0(u.frame, passes.actual), tree.omega(u.frame, passes.gamma)))
-    return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes)
+    return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes, along)
 
 
 def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Sums) -> None:
@@ -107,7 +108,7 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     if inertia is not None:
         _rotation_mass(motion, u, m, inertia, lam, sums)
     tape.stage = "F"
-    effective = tape.vec(add(loads.resultant(motion.tree, translation_frame(motion, u)), scale(-mass, m.a_rest)))
+    effective = tape.vec(add(loads.resultant(motion.tree, m.frame), scale(-mass, m.a_rest)))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
     if inertia is not None:
