@@ -36,6 +36,31 @@ def is_large(expr: sp.Basic) -> bool:
     return not is_small(expr, LARGE_TREE)
 
 
+def common_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol]
+                          ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[sp.Expr]]:
+    """``(replacements, reduced)`` as generated code computes them: SymPy's ``cse`` in its
+    canonical order where no tree is large (:func:`is_large`), else :func:`shared_subexpressions`.
+
+    SymPy's finds more than one pass over the graph (a sum's repeated part, a product's
+    constant factors gathered: a three-link chain's 119 operations become 110), but it
+    walks and sorts the trees, which a bicycle's millions of nodes rule out.
+    """
+    exprs = list(exprs)
+    if not any(is_large(e) for e in exprs):
+        return sp.cse(exprs, symbols=symbols, order="canonical")
+    return shared_subexpressions(exprs, symbols)
+
+
+def cse_operations(exprs: Sequence[sp.Basic]) -> int:
+    """Operations of what :func:`common_subexpressions` gives (``count_ops``; on large graphs,
+    :func:`operations`, which is what the shared subexpressions count to)."""
+    exprs = list(exprs)
+    if any(is_large(e) for e in exprs):
+        return operations(exprs)
+    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
+    return int(sum(sp.count_ops(v) for _, v in replacements) + sum(sp.count_ops(e) for e in reduced))
+
+
 def postorder(exprs: Iterable[sp.Basic]) -> Iterator[sp.Basic]:
     """Each distinct subexpression once, arguments before the expression, in argument order."""
     seen: set[sp.Basic] = set()

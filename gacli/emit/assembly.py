@@ -86,7 +86,7 @@ def assemble(derivation: Derivation, names: dict, printer_class, parts: Sequence
     """
     keyed = [(part, equations(derivation, part)) for part in parts]
     flat = [(name, expr) for _, group in keyed for _, name, expr in group]
-    block, printer = print_block(printer_class, names, flat, prefix=prefix, graphs=derivation.code.shared)
+    block, printer = print_block(printer_class, names, flat, prefix=prefix)
     block = live_block(block, names)
     slots, start = {}, 0
     for part, group in keyed:

@@ -30,7 +30,7 @@ from sympy.printing.octave import OctaveCodePrinter
 from sympy.printing.pycode import PythonCodePrinter
 
 from gacli.algebra.coerce import as_expr
-from gacli.algebra.graph import free_symbols, is_large, shared_subexpressions
+from gacli.algebra.graph import common_subexpressions, free_symbols
 from gacli.errors import EmitError
 
 # What generated code may depend on.
@@ -227,23 +227,18 @@ CSE_PREFIX = "_c"  # user identifiers never start with '_' (see naming.py)
 
 
 def print_block(printer_class, names: Mapping[sp.Symbol, str],
-                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX,
-                graphs: bool = False) -> tuple[Block, object]:
+                equations: Sequence[tuple[str, sp.Expr]], prefix: str = CSE_PREFIX) -> tuple[Block, object]:
     """CSE over the equations, in their order, then print; returns the block and the printer.
 
     The printer is returned so that callers can read what the code needs
     (``imports()``, ``includes()``). Temporaries are named ``<prefix>0``,
     ``<prefix>1`` ...: the prefix must be one that no name in ``names`` has.
-    ``graphs``: the expressions share their subexpressions by construction (a
-    straight-line program inlined), and are walked only as graphs.
+    The CSE is :func:`gacli.algebra.graph.common_subexpressions`, whose operations
+    :attr:`gacli.mechanics.code.CodeEquations.operations` counts.
     """
     exprs = [as_expr(expr) for _, expr in equations]
     names_of_temporaries = sp.numbered_symbols(prefix)
-    if not graphs and not any(is_large(e) for e in exprs):
-        replacements, reduced = sp.cse(exprs, symbols=names_of_temporaries, order="canonical")
-    else:
-        # SymPy's canonical ordering counts tree nodes; the bicycle's trees are millions.
-        replacements, reduced = shared_subexpressions(exprs, names_of_temporaries)
+    replacements, reduced = common_subexpressions(exprs, names_of_temporaries)
     printer = printer_class({**names, **{sym: sym.name for sym, _ in replacements}})
     where = functools.partial(locate, equations=equations)
     temporaries = tuple((sym.name, print_code(printer, value, where)) for sym, value in replacements)

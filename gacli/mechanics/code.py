@@ -13,23 +13,27 @@ always write the same code:
 - a program of at least :data:`PROGRAM_ALONE` operations is taken without
   forming the closed forms at all (a bicycle's are millions of nodes as
   trees, 4,279 operations after sharing, against the program's 1,322);
-- otherwise the one of fewer operations (a rolling disk's closed forms: 56
-  against 89; a robot towing a trailer's program: 386 against 1,390).
+- otherwise the one of fewer operations (a rolling disk's closed forms: 41
+  against 49; a robot towing a trailer's program: 300 against 624).
 
-The program's expressions are graphs sharing their subexpressions, built
-unevaluated (:func:`gacli.mechanics.program.inline`): they must be walked
+Operations are counted after the code emitters' own CSE
+(:func:`gacli.algebra.graph.cse_operations`: SymPy's ``cse`` where no tree
+is large), so that the count is what generated code computes. A program's
+expressions are graphs sharing their subexpressions, built unevaluated
+(:func:`gacli.mechanics.program.inline`), or in SymPy's canonical form when
+their trees are small and that costs fewer operations; they must be walked
 with :mod:`gacli.algebra.graph`, never as trees.
 """
 
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.graph import operations
+from gacli.algebra.graph import cse_operations, is_large, operations
 from gacli.mechanics.program import Program, build_program, inline
 from gacli.model import System
 
@@ -47,30 +51,42 @@ class CodeEquations:
     kinematic_equations: tuple[tuple[str, sp.Expr], ...]  # (coordinate, q̇), declaration order
     mass_matrix: tuple[tuple[tuple[int, int], sp.Expr], ...]  # the nonzero entries, row-major
     forcing: tuple[sp.Expr, ...]
-    operations: int  # with every repeated subexpression computed once (gacli.algebra.graph.operations)
+    operations: int  # after the code emitters' CSE (gacli.algebra.graph.cse_operations)
 
     def dense_mass_matrix(self) -> sp.ImmutableMatrix:
         """M as a k × k matrix, zero where code stores no entry."""
         k, entries = len(self.forcing), dict(self.mass_matrix)
         return sp.ImmutableMatrix(k, k, lambda i, j: entries.get((i, j), sp.S.Zero))
 
-    @property
-    def shared(self) -> bool:
-        """Whether the expressions are graphs that only :func:`shared_subexpressions` may walk."""
-        return self.route == "program"
-
 
 def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
-    rates, M, F = inline(program)
+    """The program inlined as shared graphs, or, where its trees are small, in SymPy's canonical
+    form when that costs fewer operations: evaluation gathers a bar's I + m (l/2)² into
+    m l²/3 (a three-link chain: 110 operations against 99), but copies a shared sum into
+    each sum it is a term of, which a large program cannot afford (the bicycle: 1,048 → 1,540)."""
+    plain = _inlined(program, names, evaluate=False)
+    exprs = _expressions(plain)
+    if any(is_large(e) for e in exprs):
+        return plain
+    return min((plain, _inlined(program, names, evaluate=True)), key=lambda c: c.operations)
+
+
+def _inlined(program: Program, names: tuple[str, ...], evaluate: bool) -> CodeEquations:
+    rates, M, F = inline(program, evaluate)
     k = program.k
     entries = tuple(((i, j), M[i * k + j]) for i in range(k) for j in range(k) if M[i * k + j] != 0)
-    return CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), program_operations(program))
+    record = CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), 0)
+    return replace(record, operations=cse_operations(_expressions(record)))
+
+
+def _expressions(code: CodeEquations) -> list[sp.Expr]:
+    return [*(e for _, e in code.kinematic_equations), *(e for _, e in code.mass_matrix), *code.forcing]
 
 
 def from_closed(kinematic, mass_matrix: sp.MatrixBase, forcing) -> CodeEquations:
     entries = tuple(sorted((key, e) for key, e in mass_matrix.todok().items() if e != 0))
     exprs = [*(e for _, e in kinematic), *(e for _, e in entries), *forcing]
-    return CodeEquations("closed", tuple(kinematic), entries, tuple(forcing), operations(exprs))
+    return CodeEquations("closed", tuple(kinematic), entries, tuple(forcing), cse_operations(exprs))
 
 
 def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
