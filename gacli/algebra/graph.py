@@ -36,17 +36,32 @@ def is_large(expr: sp.Basic) -> bool:
     return not is_small(expr, LARGE_TREE)
 
 
+# Tree nodes, all expressions together, up to which SymPy's cse is run (about a second: a
+# rattleback's 166,000 nodes take 0.5 s); a bicycle's millions are walked as a graph only.
+CSE_TREES = 300_000
+
+
+def trees_within(exprs: Iterable[sp.Basic], limit: int = CSE_TREES) -> bool:
+    """Whether the expressions have at most ``limit`` nodes as trees together, counted over the
+    graph (each distinct subexpression's tree size once: a bicycle's millions cost its thousands)."""
+    size: dict[sp.Basic, int] = {}
+    for node in postorder(exprs):
+        size[node] = 1 + sum(size[a] for a in node.args)
+    return sum(size[e] for e in exprs) <= limit
+
+
 def common_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol]
                           ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[sp.Expr]]:
     """``(replacements, reduced)`` as generated code computes them: SymPy's ``cse`` in its
-    canonical order where no tree is large (:func:`is_large`), else :func:`shared_subexpressions`.
+    canonical order where the trees are at most :data:`CSE_TREES` nodes together, else
+    :func:`shared_subexpressions`.
 
     SymPy's finds more than one pass over the graph (a sum's repeated part, a product's
     constant factors gathered: a three-link chain's 119 operations become 110), but it
     walks and sorts the trees, which a bicycle's millions of nodes rule out.
     """
     exprs = list(exprs)
-    if not any(is_large(e) for e in exprs):
+    if trees_within(exprs):
         return sp.cse(exprs, symbols=symbols, order="canonical")
     return shared_subexpressions(exprs, symbols)
 
@@ -55,7 +70,7 @@ def cse_operations(exprs: Sequence[sp.Basic]) -> int:
     """Operations of what :func:`common_subexpressions` gives (``count_ops``; on large graphs,
     :func:`operations`, which is what the shared subexpressions count to)."""
     exprs = list(exprs)
-    if any(is_large(e) for e in exprs):
+    if not trees_within(exprs):
         return operations(exprs)
     replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
     return int(sum(sp.count_ops(v) for _, v in replacements) + sum(sp.count_ops(e) for e in reduced))

@@ -33,8 +33,8 @@ from dataclasses import dataclass, replace
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.graph import cse_operations, is_large, operations
-from gacli.mechanics.program import Program, build_program, inline
+from gacli.algebra.graph import cse_operations, operations
+from gacli.mechanics.program import Program, build_program, inlinings
 from gacli.model import System
 
 # Operations of a program past which the closed forms are not formed for code: no
@@ -60,23 +60,19 @@ class CodeEquations:
 
 
 def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
-    """The program inlined as shared graphs, or, where its trees are small, in SymPy's canonical
-    form when that costs fewer operations: evaluation gathers a bar's I + m (l/2)² into
-    m l²/3 (a three-link chain: 110 operations against 99), but copies a shared sum into
-    each sum it is a term of, which a large program cannot afford (the bicycle: 1,048 → 1,540)."""
-    plain = _inlined(program, names, evaluate=False)
-    exprs = _expressions(plain)
-    if any(is_large(e) for e in exprs):
-        return plain
-    return min((plain, _inlined(program, names, evaluate=True)), key=lambda c: c.operations)
+    """The program's cheapest inlining (:func:`gacli.mechanics.program.inlinings`); past the trees
+    SymPy's cse takes, its operations are the program's own (what the one-pass CSE counts to)."""
+    forms, small = inlinings(program)
+    if not small:
+        return _inlined(program, names, *forms[0], operations=program_operations(program))
+    return min((_inlined(program, names, *f) for f in forms), key=lambda c: c.operations)
 
 
-def _inlined(program: Program, names: tuple[str, ...], evaluate: bool) -> CodeEquations:
-    rates, M, F = inline(program, evaluate)
+def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int | None = None) -> CodeEquations:
     k = program.k
     entries = tuple(((i, j), M[i * k + j]) for i in range(k) for j in range(k) if M[i * k + j] != 0)
     record = CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), 0)
-    return replace(record, operations=cse_operations(_expressions(record)))
+    return replace(record, operations=cse_operations(_expressions(record)) if operations is None else operations)
 
 
 def _expressions(code: CodeEquations) -> list[sp.Expr]:
@@ -101,8 +97,7 @@ def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquat
 
 def program_operations(program: Program) -> int:
     """The program's operations: its assignments and outputs, each repeated piece once."""
-    outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
-    return operations([*(e for _, e in program.assignments), *outputs])
+    return operations([*(e for _, e in program.assignments), *program.outputs])
 
 
 class StateNames:

@@ -26,7 +26,7 @@ from gacli.mechanics.program.forms import FormRows, form_rows
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
-from gacli.mechanics.program.record import Program, finish
+from gacli.mechanics.program.record import Program, cost, finish
 from gacli.mechanics.program.solve import Solver
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
@@ -72,17 +72,36 @@ def independent_rates(system: System) -> tuple[str, ...]:
 
 
 def program_of(system: System) -> Program:
-    """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise."""
+    """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise.
+
+    Where rows stated as forms can be turned (forms.FormRows.turned), the program is built
+    both ways and the shorter kept (record.cost): turned, a linkage written with frames solves its loop
+    by −l₃ and l₂ sin(θ₂ − θ₃); written in N components alone, its velocities stay in N,
+    where the loop's plain rows are the cheaper ones.
+    """
     independent = independent_rates(system)
-    names = list(system.rate_names)
-    if set(independent) - set(names):
+    if set(independent) - set(system.rate_names):
         raise Unsupported("an independent rate is not a rate of the file")
+    turned = _program(system, independent, turn=True)
+    if turned is None:
+        return _program(system, independent, turn=False)
+    plain = _program(system, independent, turn=False)
+    return min((plain, turned), key=cost)
+
+
+def _program(system: System, independent: tuple[str, ...], turn: bool) -> Program | None:
+    """The program, the stated rows turned or not; None when ``turn`` finds nothing to turn."""
+    names = list(system.rate_names)
     forms = form_rows(system)
     motion, contacts, root = _setup(system, independent, forms)
     at_root = R.root_coordinates(motion.links, motion.root, motion.coordinates)
     _check_root_alone(motion, at_root)
     reduced = [q for q in names if q not in at_root]
     dependent = [q for q in reduced if q not in independent]
+    if turn:
+        forms = forms.turned(dependent)
+        if not forms.turns:
+            return None
     others = [c for c in contacts if root is None or c is not root[1]]
     kept, columns = _columns(motion, others, forms, reduced)
     if len(kept.directions) + len(forms.forms) != len(dependent):

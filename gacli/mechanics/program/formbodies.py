@@ -114,7 +114,9 @@ def _add_translation(tape: Tape, mass, V: list, a_rest: tuple, sums: Sums) -> No
     for r in range(k):
         for s in range(r, k):
             sums.M[r][s].append(mass * tape.let(dot(V[r], V[s])))
-        sums.F[r].append(-mass * tape.let(dot(V[r], a_rest)))
+        inertial = dot(V[r], a_rest)
+        if not tape.vanishes(inertial):  # a crank's centripetal acceleration, normal to its V
+            sums.F[r].append(-mass * tape.let(inertial))
 
 
 def _add_rotation(tape: Tape, inertia, W: list, omega: tuple, alpha: tuple, sums: Sums) -> None:

@@ -9,18 +9,28 @@ derivative with all accelerations zero, Ḃ from the partial derivatives
 (gacli.algebra.fastdiff), each named on the tape, times the rates.
 The rolling contacts' rows (gacli.mechanics.program.rows) come from the
 frame model instead.
+
+Two rows that are the components of one vector along N's axes (a linkage's
+loop closed in N) are taken along a turned pair of axes where that leaves a
+dependent rate out of one of them (:meth:`FormRows.turned`): any invertible
+combination of the rows is the same constraint, and a loop written along the
+rocker's axes is triangular, solved by −l₃ and l₂ sin(θ₂ − θ₃) instead of a
+2 × 2 determinant, as by hand.
 """
 
 from __future__ import annotations
 
+import itertools
+import random
 from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.algebra import angles, trig
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
-from gacli.algebra.graph import shared_subexpressions
+from gacli.algebra.graph import is_small, postorder, shared_subexpressions
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
@@ -32,6 +42,9 @@ class FormRows:
     """The rows as forms, in order: every constraint not derived from rolling, then each quasi definition."""
 
     forms: tuple[Form, ...]
+    # The turns that made ``forms`` (i, j, θ), in order, and the rows as stated before them.
+    turns: tuple[tuple[int, int, sp.Symbol], ...] = ()
+    stated: tuple[Form, ...] | None = None
 
     @property
     def names(self) -> set[str]:
@@ -46,13 +59,103 @@ class FormRows:
         return [_entry(tape, f.dt) for f in self.forms]
 
     def rest(self, tape: Tape, system: System, actual: Pass) -> list[sp.Expr]:
-        """b₀ of each row: d/dt of its coefficients along the actual motion, times the actual rates."""
+        """b₀ of each row: d/dt of its coefficients along the actual motion, times the actual rates.
+
+        Of turned rows, the stated rows' b₀ turned: d/dt (R A) ṙ = R Ȧ ṙ + Ṙ A ṙ, and A ṙ + a₀ = 0
+        along the motion, so the turn's own rate drops out; the stated rows' derivatives are the
+        plain ones (a loop's −l cos θ θ̇² along N).
+        """
         D = time_derivative(system, actual, tape)
         out = []
-        for f in self.forms:
+        for f in self.stated or self.forms:
             terms = [D(c) * actual.rate(q) for q, c in f.coefficients]
-            out.append(tape.let(sp.Add(*terms, D(f.dt))))
-        return out
+            out.append(sp.Add(*terms, D(f.dt)))
+        for i, j, angle in self.turns:
+            c, s = tape.let(sp.cos(angle)), tape.let(sp.sin(angle))
+            out[i], out[j] = c * out[i] + s * out[j], c * out[j] - s * out[i]
+        return [tape.let(b) for b in out]
+
+
+    def turned(self, dependent: list[str]) -> "FormRows":
+        """The rows with pairs turned about an angle of theirs while that leaves fewer nonzero
+        entries in the dependent rates' columns (see the module); the rows themselves otherwise."""
+        forms, turns = list(self.forms), []
+        if len(forms) > TURNED_ROWS or not all(_small(f) for f in forms):
+            return self
+        score = _score(forms, dependent)
+        while True:
+            trials = [(i, j, angle, _turn(forms[i], forms[j], angle))
+                      for i, j in itertools.combinations(range(len(forms)), 2) for angle in _angles(forms[i], forms[j])
+                      if _clears(forms[i], forms[j], angle, dependent)]
+            scored = [(_score([*forms[:i], a, *forms[i + 1:j], b, *forms[j + 1:]], dependent), i, j, angle, a, b)
+                      for i, j, angle, (a, b) in trials]
+            best = min(scored, key=lambda t: t[:3], default=None)
+            if best is None or best[0][0] >= score[0]:
+                return FormRows(tuple(forms), tuple(turns), self.forms) if turns else self
+            score, i, j, angle, forms[i], forms[j] = best
+            turns.append((i, j, angle))
+
+
+# Rows past which no pair is turned: each pair is tried about each of its angles.
+TURNED_ROWS = 6
+_SMALL = 200  # tree nodes of a coefficient past which the rows are taken as they are
+
+
+def _small(form: Form) -> bool:
+    return all(is_small(c, _SMALL) for c in (*(c for _, c in form.coefficients), form.dt))
+
+
+def _clears(a: Form, b: Form, angle: sp.Symbol, dependent: list[str]) -> bool:
+    """Whether turning the pair about ``angle`` makes an entry of a dependent column vanish (at a
+    generic point: only then is the turn formed and reduced)."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    for q in dependent:
+        x, y = a.coefficient(q), b.coefficient(q)
+        if x == 0 or y == 0:
+            continue
+        if any(_vanishes(e) for e in (c * x + s * y, c * y - s * x)):
+            return True
+    return False
+
+
+def _vanishes(e: sp.Expr) -> bool:
+    """``e`` is zero at two generic points (its symbols drawn by name, seeded)."""
+    symbols = sorted(e.free_symbols, key=lambda x: x.name)
+    for seed in (1, 2):
+        rng = random.Random(seed)
+        value = e.xreplace({x: sp.Float(rng.uniform(0.3, 1.7), 30) for x in symbols}).evalf(30)
+        if not value.is_number or abs(complex(value)) > 1e-20:
+            return False
+    return True
+
+
+def _angles(a: Form, b: Form) -> list[sp.Symbol]:
+    """The angles whose sine or cosine the two rows' coefficients hold, sorted by name."""
+    exprs = [c for f in (a, b) for _, c in f.coefficients]
+    found = {n.args[0] for n in postorder(exprs) if isinstance(n, (sp.sin, sp.cos)) and n.args[0].is_Symbol}
+    return sorted(found, key=lambda s: s.name)
+
+
+def _turn(a: Form, b: Form, angle: sp.Symbol) -> tuple[Form, Form]:
+    """(cos θ a + sin θ b, −sin θ a + cos θ b), each coefficient reduced."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    names = tuple(dict.fromkeys(a.names + b.names))
+
+    def combined(x: sp.Expr, y: sp.Expr) -> Form:
+        pairs = ((n, _reduced(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
+        return Form(tuple((n, e) for n, e in pairs if e != 0), _reduced(x * a.dt + y * b.dt))
+
+    return combined(c, s), combined(-s, c)
+
+
+def _reduced(e: sp.Expr) -> sp.Expr:
+    return angles.relative(trig.reduce(sp.expand(e), cancel=True))
+
+
+def _score(forms: list[Form], dependent: list[str]) -> tuple[int, int]:
+    """(nonzero entries in the dependent columns, operations of every coefficient)."""
+    nonzero = sum(1 for f in forms for q in dependent if f.coefficient(q) != 0)
+    return nonzero, sum(sp.count_ops(c) for f in forms for c in (*(c for _, c in f.coefficients), f.dt))
 
 
 def _entry(tape: Tape, e: sp.Expr) -> sp.Expr:
