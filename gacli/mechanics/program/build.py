@@ -22,7 +22,7 @@ from gacli.mechanics.program import rows as R
 from gacli.mechanics.program.assemble import Passes, Sums, assemble
 from gacli.mechanics.program.contacts import contact
 from gacli.mechanics.program.formbodies import FormMotion, assemble_bodies
-from gacli.mechanics.program.forms import FormRows, form_rows
+from gacli.mechanics.program.forms import TURNINGS, FormRows, form_rows
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
@@ -74,23 +74,26 @@ def independent_rates(system: System) -> tuple[str, ...]:
 def program_of(system: System) -> Program:
     """The program of ``system`` (supported: support.static_reason is None); Unsupported otherwise.
 
-    Where rows stated as forms can be turned (forms.FormRows.turned), the program is built
-    both ways and the shorter kept (record.cost): turned, a linkage written with frames solves its loop
-    by −l₃ and l₂ sin(θ₂ − θ₃); written in N components alone, its velocities stay in N,
-    where the loop's plain rows are the cheaper ones.
+    Where rows stated as forms can be turned (forms.FormRows.turnings), the program is built
+    for the rows as stated and for each turning, and the cheapest kept (record.cost): turned,
+    a linkage written with frames solves its loop by −l₃ and l₂ sin(θ₂ − θ₃); written in N
+    components alone, its velocities stay in N, where the loop's plain rows cost as much.
     """
     independent = independent_rates(system)
     if set(independent) - set(system.rate_names):
         raise Unsupported("an independent rate is not a rate of the file")
-    turned = _program(system, independent, turn=True)
-    if turned is None:
-        return _program(system, independent, turn=False)
-    plain = _program(system, independent, turn=False)
-    return min((plain, turned), key=cost)
+    programs = [_program(system, independent, None)]
+    for turning in range(TURNINGS):
+        program = _program(system, independent, turning)
+        if program is None:
+            break
+        programs.append(program)
+    return programs[0] if len(programs) == 1 else min(programs, key=cost)
 
 
-def _program(system: System, independent: tuple[str, ...], turn: bool) -> Program | None:
-    """The program, the stated rows turned or not; None when ``turn`` finds nothing to turn."""
+def _program(system: System, independent: tuple[str, ...], turning: int | None) -> Program | None:
+    """The program with the stated rows as stated (``turning`` None) or turned (the turning-th of
+    forms.FormRows.turnings); None when there is no such turning."""
     names = list(system.rate_names)
     forms = form_rows(system)
     motion, contacts, root = _setup(system, independent, forms)
@@ -98,10 +101,11 @@ def _program(system: System, independent: tuple[str, ...], turn: bool) -> Progra
     _check_root_alone(motion, at_root)
     reduced = [q for q in names if q not in at_root]
     dependent = [q for q in reduced if q not in independent]
-    if turn:
-        forms = forms.turned(dependent)
-        if not forms.turns:
+    if turning is not None:
+        turnings = forms.turnings(dependent)
+        if turning >= len(turnings):
             return None
+        forms = turnings[turning]
     others = [c for c in contacts if root is None or c is not root[1]]
     kept, columns = _columns(motion, others, forms, reduced)
     if len(kept.directions) + len(forms.forms) != len(dependent):

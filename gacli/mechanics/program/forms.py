@@ -12,7 +12,7 @@ frame model instead.
 
 Two rows that are the components of one vector along N's axes (a linkage's
 loop closed in N) are taken along a turned pair of axes where that leaves a
-dependent rate out of one of them (:meth:`FormRows.turned`): any invertible
+dependent rate out of one of them (:meth:`FormRows.turnings`): any invertible
 combination of the rows is the same constraint, and a loop written along the
 rocker's axes is triangular, solved by −l₃ and l₂ sin(θ₂ − θ₃) instead of a
 2 × 2 determinant, as by hand.
@@ -62,47 +62,91 @@ class FormRows:
         """b₀ of each row: d/dt of its coefficients along the actual motion, times the actual rates.
 
         Of turned rows, the stated rows' b₀ turned: d/dt (R A) ṙ = R Ȧ ṙ + Ṙ A ṙ, and A ṙ + a₀ = 0
-        along the motion, so the turn's own rate drops out; the stated rows' derivatives are the
-        plain ones (a loop's −l cos θ θ̇² along N).
+        along the motion, so the turn's own rate drops out. It is formed in closed form and
+        reduced, as the turned rows are: a loop's centripetal terms along N, −l cos θ θ̇², turned
+        about the coupler, are l cos(θ − θ₂) θ̇², on the sines and cosines the rows already hold.
         """
+        if self.turns:
+            values = {S.rate(q): actual.rate(q) for q in system.rate_names}
+            return [tape.let(b.xreplace(values)) for b in _turned_rest(self, system)]
         D = time_derivative(system, actual, tape)
         out = []
-        for f in self.stated or self.forms:
+        for f in self.forms:
             terms = [D(c) * actual.rate(q) for q, c in f.coefficients]
-            out.append(sp.Add(*terms, D(f.dt)))
-        for i, j, angle in self.turns:
-            c, s = tape.let(sp.cos(angle)), tape.let(sp.sin(angle))
-            out[i], out[j] = c * out[i] + s * out[j], c * out[j] - s * out[i]
-        return [tape.let(b) for b in out]
+            out.append(tape.let(sp.Add(*terms, D(f.dt))))
+        return out
 
-
-    def turned(self, dependent: list[str]) -> "FormRows":
+    def turnings(self, dependent: list[str]) -> list["FormRows"]:
         """The rows with pairs turned about an angle of theirs while that leaves fewer nonzero
-        entries in the dependent rates' columns (see the module); the rows themselves otherwise."""
+        entries in the dependent rates' columns (see the module): one set for each first turn
+        that leaves the fewest, at most :data:`TURNINGS`; none when no turn clears an entry."""
+        if len(self.forms) > TURNED_ROWS or not all(_small(f) for f in self.forms):
+            return []
+        first = _best_turns(list(self.forms), dependent)
+        return [self._completed(turn, dependent) for turn in first[:TURNINGS]]
+
+    def _completed(self, turn: tuple, dependent: list[str]) -> "FormRows":
         forms, turns = list(self.forms), []
-        if len(forms) > TURNED_ROWS or not all(_small(f) for f in forms):
-            return self
-        score = _score(forms, dependent)
-        while True:
-            trials = [(i, j, angle, _turn(forms[i], forms[j], angle))
-                      for i, j in itertools.combinations(range(len(forms)), 2) for angle in _angles(forms[i], forms[j])
-                      if _clears(forms[i], forms[j], angle, dependent)]
-            scored = [(_score([*forms[:i], a, *forms[i + 1:j], b, *forms[j + 1:]], dependent), i, j, angle, a, b)
-                      for i, j, angle, (a, b) in trials]
-            best = min(scored, key=lambda t: t[:3], default=None)
-            if best is None or best[0][0] >= score[0]:
-                return FormRows(tuple(forms), tuple(turns), self.forms) if turns else self
-            score, i, j, angle, forms[i], forms[j] = best
+        while turn is not None:
+            i, j, angle, a, b = turn
+            forms[i], forms[j] = a, b
             turns.append((i, j, angle))
+            following = _best_turns(forms, dependent)
+            turn = following[0] if following else None
+        return FormRows(tuple(forms), tuple(turns), self.forms)
+
+
+def _best_turns(forms: list[Form], dependent: list[str]) -> list[tuple]:
+    """(i, j, θ, turned row i, turned row j) of the turns that leave the fewest nonzero entries in
+    the dependent columns, fewer than now; in order of the rows' operations, then of i, j, θ."""
+    trials = [(i, j, angle, *_turn(forms[i], forms[j], angle))
+              for i, j in itertools.combinations(range(len(forms)), 2) for angle in _angles(forms[i], forms[j])
+              if _clears(forms[i], forms[j], angle, dependent)]
+    scored = [(_score([*forms[:i], a, *forms[i + 1:j], b, *forms[j + 1:]], dependent), (i, j, angle, a, b))
+              for i, j, angle, a, b in trials]
+    now = _score(forms, dependent)[0]
+    fewest = min((score[0] for score, _ in scored), default=now)
+    if fewest >= now:
+        return []
+    kept = sorted((x for x in scored if x[0][0] == fewest), key=lambda x: (x[0][1], x[1][0], x[1][1], x[1][2].name))
+    return [turn for _, turn in kept]
 
 
 # Rows past which no pair is turned: each pair is tried about each of its angles.
 TURNED_ROWS = 6
+TURNINGS = 3  # first turns tried, each built into a program (build.program_of keeps the cheapest)
 _SMALL = 200  # tree nodes of a coefficient past which the rows are taken as they are
 
 
 def _small(form: Form) -> bool:
     return all(is_small(c, _SMALL) for c in (*(c for _, c in form.coefficients), form.dt))
+
+
+def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
+    """b₀ of the stated rows in closed form, in the rates' symbols, turned as the rows were."""
+    chain = {S.value(c.name): S.rate(c.name) for c in system.coordinates}
+    chain.update(S.function_chain(f.name for f in system.free_functions))
+    chain[S.T] = sp.S.One
+
+    def derivative(e: sp.Expr) -> sp.Expr:
+        return sp.Add(*(sp.diff(e, x) * dx for x, dx in chain.items() if e.has(x)))
+
+    out = [sp.Add(*(derivative(c) * S.rate(q) for q, c in f.coefficients), derivative(f.dt)) for f in rows.stated]
+    rates = sorted(set(chain.values()) - {sp.S.One}, key=lambda x: x.name)
+    for i, j, angle in rows.turns:
+        c, s = sp.cos(angle), sp.sin(angle)
+        out[i], out[j] = _by_rates(c * out[i] + s * out[j], rates), _by_rates(c * out[j] - s * out[i], rates)
+    return out
+
+
+def _by_rates(e: sp.Expr, rates: list[sp.Symbol]) -> sp.Expr:
+    """``e`` reduced one product of rates at a time: each term of a loop's b₀ holds the angles of
+    one link, which only apart are written through their differences (gacli.algebra.angles)."""
+    groups: dict[sp.Expr, list[sp.Expr]] = {}
+    for term in sp.Add.make_args(sp.expand(e)):
+        rate, rest = term.as_independent(*rates, as_Add=False)[::-1]
+        groups.setdefault(rate, []).append(rest)
+    return sp.Add(*(rate * _reduced(sp.Add(*rest)) for rate, rest in groups.items()))
 
 
 def _clears(a: Form, b: Form, angle: sp.Symbol, dependent: list[str]) -> bool:
