@@ -68,6 +68,23 @@ def relative(expr: sp.Expr, beside: sp.Expr = sp.S.One, sums: bool = False) -> s
     return best
 
 
+def reduced(expr: sp.Expr) -> sp.Expr:
+    """A small closed form distributed, with sin² + cos² = 1 and its pairs of angles written through
+    their difference: a loop's row turned about the coupler, cos θ₂ (−l sin θ₁) + sin θ₂ (l cos θ₁),
+    is −l sin(θ₁ − θ₂)."""
+    return relative(trig.reduce(sp.expand(expr), cancel=True))
+
+
+def reduced_by(expr: sp.Expr, rates: list[sp.Symbol]) -> sp.Expr:
+    """:func:`reduced` one product of ``rates`` at a time: each term of a loop's velocity-product
+    term holds the angles of one link, which only apart are written through their differences."""
+    groups: dict[sp.Expr, list[sp.Expr]] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        rest, rate = term.as_independent(*rates, as_Add=False)
+        groups.setdefault(rate, []).append(rest)
+    return sp.Add(*(rate * reduced(sp.Add(*rest)) for rate, rest in groups.items()))
+
+
 def _through(expr: sp.Expr, kept: sp.Symbol, gone: sp.Symbol, sense: int) -> sp.Expr:
     """``expr`` with ``gone`` written through ``kept`` and their difference (``sense`` −1:
     gone = kept − (kept − gone)) or their sum (+1: gone = (kept + gone) − kept), reduced.

@@ -82,18 +82,20 @@ def program_of(system: System) -> Program:
     independent = independent_rates(system)
     if set(independent) - set(system.rate_names):
         raise Unsupported("an independent rate is not a rate of the file")
-    programs = [_program(system, independent, None)]
+    grams = (False, True) if system.frames is None else (False,)
+    programs = [_program(system, independent, None, g) for g in grams]
     for turning in range(TURNINGS):
-        program = _program(system, independent, turning)
-        if program is None:
+        built = [_program(system, independent, turning, g) for g in grams]
+        if built[0] is None:
             break
-        programs.append(program)
+        programs += built
     return programs[0] if len(programs) == 1 else min(programs, key=cost)
 
 
-def _program(system: System, independent: tuple[str, ...], turning: int | None) -> Program | None:
+def _program(system: System, independent: tuple[str, ...], turning: int | None, gram: bool) -> Program | None:
     """The program with the stated rows as stated (``turning`` None) or turned (the turning-th of
-    forms.FormRows.turnings); None when there is no such turning."""
+    forms.FormRows.turnings), a file without frames' points through their dot products or not
+    (``gram``, gacli.mechanics.program.gram); None when there is no such turning."""
     names = list(system.rate_names)
     forms = form_rows(system)
     motion, contacts, root = _setup(system, independent, forms)
@@ -114,7 +116,7 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None) 
     solver, passes = _rates(motion, columns, forms.dt(motion.tape), independent, dependent)
     rates = _kinematics(motion, [c.name for c in system.coordinates], at_root, passes.actual)
     passes = _gamma(system, motion, kept, forms, solver, dependent, passes)
-    return replace(_dynamics(system, motion, passes, rates, at_root), independent=tuple(independent))
+    return replace(_dynamics(system, motion, passes, rates, at_root, gram), independent=tuple(independent))
 
 
 def _check_root_alone(motion: Motion, at_root) -> None:
@@ -182,7 +184,7 @@ def _gamma(system: System, motion: Motion, kept: R.Rows, forms: FormRows, solver
     return Passes(passes.partial, passes.actual, Pass("gamma", gamma))
 
 
-def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_root: dict) -> Program:
+def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_root: dict, gram: bool) -> Program:
     """M and F (eq. 14.19): every unit (or, without frames, every body), the loads at points of no
     unit, the potential and work."""
     tape, k = motion.tape, len(passes.partial)
@@ -191,7 +193,7 @@ def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_ro
     substitution = {S.rate(q): actual.rate(q) for q in system.rate_names if actual.rate(q) != S.rate(q)}
     substitution.update({S.rate(q): e for q, e in rates.items()})
     if system.frames is None:
-        assemble_bodies(FormMotion(tape, system, passes, substitution), sums)
+        assemble_bodies(FormMotion(tape, system, passes, substitution, gram), sums)
     else:
         _units(system, motion, passes, substitution, sums)
     _potential_and_work(system, motion, passes, at_root, substitution, sums)

@@ -24,7 +24,9 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Passes, Sums
+from gacli.mechanics.program import gram
 from gacli.mechanics.program.forms import time_derivative
+from gacli.mechanics.program.gram import Gram
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale
@@ -34,8 +36,9 @@ from gacli.model import Form, System
 class FormMotion:
     """Partial, actual and rest vectors of closed-form positions and rotation forms, on one tape."""
 
-    def __init__(self, tape: Tape, system: System, passes: Passes, substitution: dict) -> None:
+    def __init__(self, tape: Tape, system: System, passes: Passes, substitution: dict, gram: bool = False) -> None:
         self.tape, self.system, self.passes = tape, system, passes
+        self.gram = gram  # points through their dot products (gacli.mechanics.program.gram) where they may be
         self.coordinates = [c.name for c in system.coordinates]
         self.names = list(system.rate_names)
         self.substitution = substitution  # dependent rate symbols → their program values
@@ -89,16 +92,21 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
     rotations = {}
     for body in system.bodies:
         tape.stage = "partials"
-        V, a_rest = motion.point(body.position)
         mass = tape.let(body.mass)
-        _add_translation(tape, mass, V, a_rest, sums)
+        if motion.gram and Gram.takes(motion, body.position):
+            gram.add_translation(motion, mass, body.position, sums)
+        else:
+            _add_translation(tape, mass, *motion.point(body.position), sums)
         if body.is_rigid:
             rotations[body.name] = motion.rotation(body.rotation)
             _add_rotation(tape, body.inertia.tolist(), *rotations[body.name], sums)
     tape.stage = "F"
     for force in system.forces:
-        V, _ = motion.point(force.point)
         f = tuple(motion.loaded(c) for c in force.vector)
+        if motion.gram and Gram.takes(motion, force.point):
+            gram.add_work(motion, force.point, f, sums)
+            continue
+        V, _ = motion.point(force.point)
         for r, v in enumerate(V):
             sums.F[r].append(tape.let(dot(v, f)))
     for torque in system.torques:

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.algebra import angles, trig
+from gacli.algebra import angles
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
@@ -135,18 +135,8 @@ def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
     rates = sorted(set(chain.values()) - {sp.S.One}, key=lambda x: x.name)
     for i, j, angle in rows.turns:
         c, s = sp.cos(angle), sp.sin(angle)
-        out[i], out[j] = _by_rates(c * out[i] + s * out[j], rates), _by_rates(c * out[j] - s * out[i], rates)
+        out[i], out[j] = angles.reduced_by(c * out[i] + s * out[j], rates), angles.reduced_by(c * out[j] - s * out[i], rates)
     return out
-
-
-def _by_rates(e: sp.Expr, rates: list[sp.Symbol]) -> sp.Expr:
-    """``e`` reduced one product of rates at a time: each term of a loop's b₀ holds the angles of
-    one link, which only apart are written through their differences (gacli.algebra.angles)."""
-    groups: dict[sp.Expr, list[sp.Expr]] = {}
-    for term in sp.Add.make_args(sp.expand(e)):
-        rate, rest = term.as_independent(*rates, as_Add=False)[::-1]
-        groups.setdefault(rate, []).append(rest)
-    return sp.Add(*(rate * _reduced(sp.Add(*rest)) for rate, rest in groups.items()))
 
 
 def _clears(a: Form, b: Form, angle: sp.Symbol, dependent: list[str]) -> bool:
@@ -186,14 +176,10 @@ def _turn(a: Form, b: Form, angle: sp.Symbol) -> tuple[Form, Form]:
     names = tuple(dict.fromkeys(a.names + b.names))
 
     def combined(x: sp.Expr, y: sp.Expr) -> Form:
-        pairs = ((n, _reduced(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
-        return Form(tuple((n, e) for n, e in pairs if e != 0), _reduced(x * a.dt + y * b.dt))
+        pairs = ((n, angles.reduced(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
+        return Form(tuple((n, e) for n, e in pairs if e != 0), angles.reduced(x * a.dt + y * b.dt))
 
     return combined(c, s), combined(-s, c)
-
-
-def _reduced(e: sp.Expr) -> sp.Expr:
-    return angles.relative(trig.reduce(sp.expand(e), cancel=True))
 
 
 def _score(forms: list[Form], dependent: list[str]) -> tuple[int, int]:
