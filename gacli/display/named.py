@@ -25,7 +25,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.algebra.readable import show
-from gacli.algebra.graph import free_symbols, postorder, shared_subexpressions, substitute
+from gacli.algebra.graph import common_subexpressions, free_symbols, postorder, shared_subexpressions, substitute
 
 AXES = "xyz"
 RATES = "dependent rates, eq. (14.7)"
@@ -93,9 +93,19 @@ def _pass(key: str) -> tuple[str, str, str]:
 # What each kind of label is, and, once for the section, what the words mean (LEGEND).
 _WHAT = {"w": "angular velocity", "alpha": "angular acceleration", "v": "velocity", "a": "acceleration"}
 _REST = {"alpha": ", accelerations zero", "a": ", accelerations zero"}
-LEGEND = ("(a frame's angular velocity and acceleration along its own axes, a point's along the frame in "
-          "brackets; partial: for one speed, eq. (14.8); accelerations zero: the velocity-product part, "
-          "eq. (14.14); for gamma: for the dependent accelerations' part; per unit dot(q): for the rolling rows)")
+LEGEND = "a frame's angular velocity and acceleration along its own axes, a point's along the frame in brackets"
+# What the words of a description mean, said once in the legend when some description has them.
+WORDS = (("partial", "partial: for one speed, eq. (14.8)"),
+         ("accelerations zero", "accelerations zero: the velocity-product part, eq. (14.14)"),
+         ("for gamma", "for gamma: the dependent accelerations' part"),
+         ("per unit dot(", "per unit dot(q): for the rolling rows"))
+
+
+def legend(abouts) -> str:
+    """The legend of a program's named quantities: what their descriptions say, the words they use."""
+    abouts = [a for a in abouts if a]
+    said = [meaning for word, meaning in WORDS if any(word in a for a in abouts)]
+    return "(" + "; ".join([LEGEND, *said]) + ")"
 
 
 def label_name(label: tuple) -> tuple[str, str, str]:
@@ -249,7 +259,8 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     exprs = substitute(exprs, by_rate) if by_rate else list(exprs)
     # Each rate's value with the other rates named in it, never itself.
     rate_values = [substitute([dependent[n]], {e: r for e, r in by_rate.items() if r != S.rate(n)})[0] for n in named]
-    replacements, reduced = shared_subexpressions([*rate_values, *exprs], iter(lambda: namer.fresh(), None))
+    # The CSE generated code makes (SymPy's where the trees allow): the quantities are its temporaries.
+    replacements, reduced = common_subexpressions([*rate_values, *exprs], iter(lambda: namer.fresh(), None))
     rate_values, exprs = reduced[:len(rate_values)], reduced[len(rate_values):]
     inline: dict[sp.Symbol, sp.Expr] = {}
     for s, v in replacements:

@@ -94,10 +94,11 @@ def forces(d: Derivation) -> Section:
 
 
 def equations(d: Derivation) -> Section:
+    """∂G/∂u̇_s = Q_s, each Q_s by the name the section above it prints it under."""
     lines = []
     for s, name in enumerate(d.independent):
         lhs, rhs = printed.equation(d, s)
-        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(rhs)}")
+        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(rhs) if rhs == 0 else f'Q_{name}'}")
         if lhs == 0 and rhs == 0:
             # Said, not left for a reader to find: M is singular and the motion undetermined.
             lines.append(f"  (0 = 0: G holds no {rate_name(name, 2)} and no load does work in {name}: nothing "
@@ -136,16 +137,17 @@ def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
+    header = len(d.system.title or d.system.name) + 1 + L.printed_length([freedom(d)])
     if not d.closed or not displayable(d) or not L.tidy_worth_trying(d):
-        return L.named_of(d)
+        return L.named_of(d, header)
     limit = L.limit(d)
     if printed.coefficients(d, limit) is None:
-        return L.named_of(d)
+        return L.named_of(d, header)
     closed = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
     length, longest = L.printed_length(closed), L.longest_line(closed)
     if length <= limit and longest <= L.LONGEST_LINE:
         return None
-    named = L.named_of(d)
+    named = L.named_of(d, header)
     sections = named_sections(d, named)
     if length > limit:
         return named if L.printed_length(sections) < length else None

@@ -42,8 +42,9 @@ class FormRows:
     """The rows as forms, in order: every constraint not derived from rolling, then each quasi definition."""
 
     forms: tuple[Form, ...]
-    # The turns that made ``forms`` (i, j, θ), in order, and the rows as stated before them.
-    turns: tuple[tuple[int, int, sp.Symbol], ...] = ()
+    # The combinations that made ``forms`` (i, j, φ_i, φ_j: _best_turns), in order, and the rows
+    # as stated before them.
+    turns: tuple[tuple[int, int, sp.Expr, sp.Expr], ...] = ()
     stated: tuple[Form, ...] | None = None
 
     @property
@@ -77,9 +78,9 @@ class FormRows:
         return out
 
     def turnings(self, dependent: list[str]) -> list["FormRows"]:
-        """The rows with pairs turned about an angle of theirs while that leaves fewer nonzero
-        entries in the dependent rates' columns (see the module): one set for each first turn
-        that leaves the fewest, at most :data:`TURNINGS`; none when no turn clears an entry."""
+        """The rows with pairs combined while that leaves fewer nonzero entries in the dependent
+        rates' columns (see the module, :func:`_best_turns`): one set for each of the first
+        :data:`TURNINGS` first combinations, each completed greedily; none when none clears an entry."""
         if len(self.forms) > TURNED_ROWS or not all(_small(f) for f in self.forms):
             return []
         first = _best_turns(list(self.forms), dependent)
@@ -88,28 +89,49 @@ class FormRows:
     def _completed(self, turn: tuple, dependent: list[str]) -> "FormRows":
         forms, turns = list(self.forms), []
         while turn is not None:
-            i, j, angle, a, b = turn
+            i, j, phases, a, b = turn
             forms[i], forms[j] = a, b
-            turns.append((i, j, angle))
+            turns.append((i, j, *phases))
             following = _best_turns(forms, dependent)
             turn = following[0] if following else None
         return FormRows(tuple(forms), tuple(turns), self.forms)
 
 
 def _best_turns(forms: list[Form], dependent: list[str]) -> list[tuple]:
-    """(i, j, θ, turned row i, turned row j) of the turns that leave the fewest nonzero entries in
-    the dependent columns, fewer than now; in order of the rows' operations, then of i, j, θ."""
-    trials = [(i, j, angle, *_turn(forms[i], forms[j], angle))
-              for i, j in itertools.combinations(range(len(forms)), 2) for angle in _angles(forms[i], forms[j])
-              if _clears(forms[i], forms[j], angle, dependent)]
-    scored = [(_score([*forms[:i], a, *forms[i + 1:j], b, *forms[j + 1:]], dependent), (i, j, angle, a, b))
-              for i, j, angle, a, b in trials]
+    """(i, j, (φ_i, φ_j), new row i, new row j) of the combinations that leave fewer nonzero entries
+    in the dependent columns than now; the fewest first, then by the rows' operations, then i, j.
+
+    A combination writes row i as cos φ_i r_i + sin φ_i r_j and row j as cos φ_j r_i + sin φ_j r_j:
+    a turn about θ (φ_i = θ, φ_j = θ + π/2), or, where two dependent columns of the pair are each
+    one link's lever turning with its angle (a loop's l_a ė_a, l_b ė_b), the row along each link:
+    each then holds the other link alone, divided by l sin(θ_a − θ_b), the loop's own dead point.
+    """
+    trials = []
+    for i, j in itertools.combinations(range(len(forms)), 2):
+        phases = [(angle, angle + sp.pi / 2) for angle in _angles(forms[i], forms[j])
+                  if _clears(forms[i], forms[j], angle, dependent)]
+        phases += _along_links(forms[i], forms[j], dependent)
+        trials += [(i, j, p, *_combined(forms[i], forms[j], *p)) for p in phases]
+    scored = [(_score([*forms[:i], a, *forms[i + 1:j], b, *forms[j + 1:]], dependent), (i, j, p, a, b))
+              for i, j, p, a, b in trials]
     now = _score(forms, dependent)[0]
-    fewest = min((score[0] for score, _ in scored), default=now)
-    if fewest >= now:
-        return []
-    kept = sorted((x for x in scored if x[0][0] == fewest), key=lambda x: (x[0][1], x[1][0], x[1][1], x[1][2].name))
+    kept = sorted((x for x in scored if x[0][0] < now), key=lambda x: (*x[0], x[1][0], x[1][1], str(x[1][2])))
     return [turn for _, turn in kept]
+
+
+def _along_links(a: Form, b: Form, dependent: list[str]) -> list[tuple[sp.Expr, sp.Expr]]:
+    """(φ_i, φ_j) that each clear a different dependent column whose entries are a lever of fixed
+    length turning with one angle (x² + y² holds no angle): the pair's rows along those links."""
+    clearing = []
+    for q in dependent:
+        x, y = a.coefficient(q), b.coefficient(q)
+        if x == 0 or y == 0 or _angles(Form((("", angles.reduced(x * x + y * y)),)), Form(())):
+            continue
+        for angle in _angles(Form((("", x),)), Form((("", y),))):
+            clearing += [(q, phase) for phase in (angle, angle + sp.pi / 2)
+                         if _vanishes(sp.cos(phase) * x + sp.sin(phase) * y)]
+    return [(p, r) for (q, p), (s, r) in itertools.combinations(clearing, 2)
+            if q != s and not _vanishes(sp.sin(r - p))]
 
 
 # Rows past which no pair is turned: each pair is tried about each of its angles.
@@ -133,9 +155,8 @@ def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
 
     out = [sp.Add(*(derivative(c) * S.rate(q) for q, c in f.coefficients), derivative(f.dt)) for f in rows.stated]
     rates = sorted(set(chain.values()) - {sp.S.One}, key=lambda x: x.name)
-    for i, j, angle in rows.turns:
-        c, s = sp.cos(angle), sp.sin(angle)
-        out[i], out[j] = angles.reduced_by(c * out[i] + s * out[j], rates), angles.reduced_by(c * out[j] - s * out[i], rates)
+    for i, j, first, second in rows.turns:
+        out[i], out[j] = (angles.reduced_by(sp.cos(p) * out[i] + sp.sin(p) * out[j], rates) for p in (first, second))
     return out
 
 
@@ -170,16 +191,16 @@ def _angles(a: Form, b: Form) -> list[sp.Symbol]:
     return sorted(found, key=lambda s: s.name)
 
 
-def _turn(a: Form, b: Form, angle: sp.Symbol) -> tuple[Form, Form]:
-    """(cos θ a + sin θ b, −sin θ a + cos θ b), each coefficient reduced."""
-    c, s = sp.cos(angle), sp.sin(angle)
+def _combined(a: Form, b: Form, first: sp.Expr, second: sp.Expr) -> tuple[Form, Form]:
+    """(cos φ₁ a + sin φ₁ b, cos φ₂ a + sin φ₂ b), each coefficient reduced."""
     names = tuple(dict.fromkeys(a.names + b.names))
 
-    def combined(x: sp.Expr, y: sp.Expr) -> Form:
+    def combined(phase: sp.Expr) -> Form:
+        x, y = sp.cos(phase), sp.sin(phase)
         pairs = ((n, angles.reduced(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
         return Form(tuple((n, e) for n, e in pairs if e != 0), angles.reduced(x * a.dt + y * b.dt))
 
-    return combined(c, s), combined(-s, c)
+    return combined(first), combined(second)
 
 
 def _score(forms: list[Form], dependent: list[str]) -> tuple[int, int]:
