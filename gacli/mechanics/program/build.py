@@ -140,7 +140,7 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
     numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
     if n and rank(numeric) < n:
         raise Unsupported("the rows do not determine the dependent rates from the independent ones")
-    solver = Solver(tape, A_d)
+    solver = Solver(tape, A_d, on_spheres(motion))
     beta = {}
     for qi in independent:
         for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)])):
@@ -151,6 +151,30 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
         rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent), beta0.get(qd, 0)))
     partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
     return solver, Passes(partial, Pass("actual", rates), Pass("gamma", {}))
+
+
+def on_spheres(motion: Motion):
+    """A squared row length read on the unit spheres of the frames turned by Euler parameters, or
+    None without such frames. A quaternion frame's rows (its body rates 2 G(e) ė and its unit
+    norm e·ė = 0) are orthogonal, of squared length 4 e·e and e·e, and e·e = 1 is the frame's own
+    constraint: the program divides by 4 and 1, as Kane's ½ Eᵀ ω does, where the rows' own
+    lengths cost a sum of squares and a division (a top in a quaternion frame: 73 → 64 operations
+    after SymPy's cse). The closed forms keep e·e; both agree on the sphere, where the motion is
+    (tests/test_program.py, tests/test_generated_numeric.py compare them there)."""
+    spheres = [e.quaternion for e in motion.tree.edges.values() if e.quaternion is not None]
+    if not spheres or not all(x.is_Symbol for q in spheres for x in q):
+        return None
+    tape = motion.tape
+
+    def length(e: sp.Expr) -> sp.Expr:
+        closed = sp.expand(tape.closed(e))
+        for q in spheres:
+            on = sp.expand(closed.xreplace({q[0] ** 2: 1 - q[1] ** 2 - q[2] ** 2 - q[3] ** 2}))
+            if not on.free_symbols & set(q):
+                return tape.let(on)
+        return e
+
+    return length
 
 
 def _kinematics(motion: Motion, names: list[str], at_root: dict, actual: Pass) -> dict[str, sp.Expr]:

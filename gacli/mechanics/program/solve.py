@@ -76,11 +76,14 @@ class Solver:
     the plan's values on the tape once, then each solve writes only its own.
     """
 
-    def __init__(self, tape: Tape, A: list[list]) -> None:
+    def __init__(self, tape: Tape, A: list[list], length=None) -> None:
+        """``length``: a squared row length as the program may take it (on the constraints, where
+        the motion is; see gacli.mechanics.program.build), or None to take it as it is."""
         self.tape, self.A = tape, A
         order, rows, cols = plan(A)
         self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
-        self.blocks = [_Block.of(tape, A, r, c, orthogonal) for r, c, orthogonal in _split(tape, A, rows, cols)]
+        self.blocks = [_Block.of(tape, A, r, c, orthogonal, length or (lambda e: e))
+                       for r, c, orthogonal in _split(tape, A, rows, cols)]
 
     def solve(self, b: list) -> list[sp.Expr]:
         tape, A = self.tape, self.A
@@ -128,10 +131,10 @@ class _Block:
     adjugate: tuple | None
 
     @staticmethod
-    def of(tape: Tape, A: list[list], rows, cols, orthogonal: bool) -> "_Block":
+    def of(tape: Tape, A: list[list], rows, cols, orthogonal: bool, length) -> "_Block":
         B = _sub(A, rows, cols)
         if orthogonal:
-            lengths = [tape.let(1 / tape.let(sp.Add(*(x * x for x in row)))) for row in B]
+            lengths = [tape.let(1 / length(tape.let(sp.Add(*(x * x for x in row))))) for row in B]
             return _Block(tuple(rows), tuple(cols), lengths, None)
         return _Block(tuple(rows), tuple(cols), None, adjugate(tape, B))
 

@@ -100,6 +100,21 @@ class Tape:
             c = -c if hit is not None else c
         return None if hit is None else c * hit
 
+    def closed(self, e: sp.Expr) -> sp.Expr:
+        """``e`` with the assignments it reads written out, down to the state and the parameters
+        (for small values only: a tree of every step)."""
+        values = {name: value for name, value, _ in self.assignments}
+        memo: dict[sp.Symbol, sp.Expr] = {}
+
+        def out(x: sp.Expr) -> sp.Expr:
+            names = [s for s in x.free_symbols if s in values]
+            for s in names:
+                if s not in memo:
+                    memo[s] = out(values[s])
+            return x.xreplace({s: memo[s] for s in names}) if names else x
+
+        return out(as_expr(e))
+
     def vec(self, v: Iterable, name: tuple | None = None) -> tuple:
         """Each component let; ``name`` labels component i as ``(*name, i)``."""
         return tuple(self.let(c, None if name is None else (*name, i)) for i, c in enumerate(v))
