@@ -64,8 +64,9 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     SymPy's cse takes, its operations are the program's own (what the one-pass CSE counts to)."""
     forms, small = inlinings(program)
     if not small:
-        return _inlined(program, names, *forms[0], operations=program_operations(program))
-    return min((factored(_inlined(program, names, *f)) for f in forms), key=lambda c: c.operations)
+        return _inlined(program, names, *forms[0][0], operations=program_operations(program))
+    return min((factored(_inlined(program, names, *f, operations=count)) for f, count in forms),
+               key=lambda c: c.operations)
 
 
 def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int | None = None) -> CodeEquations:

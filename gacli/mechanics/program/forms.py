@@ -20,6 +20,7 @@ rocker's axes is triangular, solved by −l₃ and l₂ sin(θ₂ − θ₃) ins
 
 from __future__ import annotations
 
+import functools
 import itertools
 import random
 from dataclasses import dataclass
@@ -81,10 +82,7 @@ class FormRows:
         """The rows with pairs combined while that leaves fewer nonzero entries in the dependent
         rates' columns (see the module, :func:`_best_turns`): one set for each of the first
         :data:`TURNINGS` first combinations, each completed greedily; none when none clears an entry."""
-        if len(self.forms) > TURNED_ROWS or not all(_small(f) for f in self.forms):
-            return []
-        first = _best_turns(list(self.forms), dependent)
-        return [self._completed(turn, dependent) for turn in first[:TURNINGS]]
+        return list(_turnings(self, tuple(dependent)))
 
     def _completed(self, turn: tuple, dependent: list[str]) -> "FormRows":
         forms, turns = list(self.forms), []
@@ -95,6 +93,15 @@ class FormRows:
             following = _best_turns(forms, dependent)
             turn = following[0] if following else None
         return FormRows(tuple(forms), tuple(turns), self.forms)
+
+
+@functools.lru_cache(maxsize=8)
+def _turnings(rows: FormRows, dependent: tuple[str, ...]) -> tuple[FormRows, ...]:
+    """FormRows.turnings, found once for the rows of a load (the program is built once for each)."""
+    if len(rows.forms) > TURNED_ROWS or not all(_small(f) for f in rows.forms):
+        return ()
+    first = _best_turns(list(rows.forms), list(dependent))
+    return tuple(rows._completed(turn, list(dependent)) for turn in first[:TURNINGS])
 
 
 def _best_turns(forms: list[Form], dependent: list[str]) -> list[tuple]:
@@ -125,9 +132,10 @@ def _along_links(a: Form, b: Form, dependent: list[str]) -> list[tuple[sp.Expr, 
     clearing = []
     for q in dependent:
         x, y = a.coefficient(q), b.coefficient(q)
-        if x == 0 or y == 0 or _angles(Form((("", angles.reduced(x * x + y * y)),)), Form(())):
+        turning = _angles(Form((("", x),)), Form((("", y),)))
+        if x == 0 or y == 0 or any(not _vanishes(_moved(x * x + y * y, angle)) for angle in turning):
             continue
-        for angle in _angles(Form((("", x),)), Form((("", y),))):
+        for angle in turning:
             clearing += [(q, phase) for phase in (angle, angle + sp.pi / 2)
                          if _vanishes(sp.cos(phase) * x + sp.sin(phase) * y)]
     return [(p, r) for (q, p), (s, r) in itertools.combinations(clearing, 2)
@@ -171,6 +179,11 @@ def _clears(a: Form, b: Form, angle: sp.Symbol, dependent: list[str]) -> bool:
         if any(_vanishes(e) for e in (c * x + s * y, c * y - s * x)):
             return True
     return False
+
+
+def _moved(e: sp.Expr, angle: sp.Symbol) -> sp.Expr:
+    """e at ``angle`` + 0.37 less e: zero when e does not depend on the angle."""
+    return e.xreplace({angle: angle + sp.Rational(37, 100)}) - e
 
 
 def _vanishes(e: sp.Expr) -> bool:

@@ -9,6 +9,7 @@ expression graphs sharing their subexpressions.
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 
 import sympy as sp
@@ -97,19 +98,37 @@ def inline(program: Program, evaluate: bool = False) -> tuple[list[sp.Expr], lis
 
 
 
-def inlinings(program: Program) -> tuple[list[tuple[list[sp.Expr], list[sp.Expr], list[sp.Expr]]], bool]:
-    """The forms generated code may take the program in (:func:`inline`): as shared graphs, and,
-    where their trees are within what SymPy's cse takes (gacli.algebra.graph.CSE_TREES), in
-    SymPy's canonical form too. Evaluation gathers a bar's I + m (l/2)² into m l²/3 (a
-    three-link chain: 110 operations against 99; a rattleback: 1,195 against 894), but copies
-    a shared sum into each sum it is a term of (the bicycle: 1,469 → 2,047 as a graph).
-    Returns the forms and whether their trees are within that size.
+def inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
+    """The forms generated code may take the program in (:func:`inline`), each with its operations
+    after the code emitters' CSE: as shared graphs, and, where their trees are within what
+    SymPy's cse takes (gacli.algebra.graph.CSE_TREES), in SymPy's canonical form too. Evaluation
+    gathers a bar's I + m (l/2)² into m l²/3 (a three-link chain: 110 operations against 99; a
+    rattleback: 1,195 against 894), but copies a shared sum into each sum it is a term of (the
+    bicycle: 1,469 → 2,047 as a graph). Returns ``[((q̇, M, F), operations), ...]`` and whether
+    the trees are within that size (past it, the one form's operations are None: the program's
+    own count stands for them). Found once per program (the builder costs its candidates, and
+    generated code then takes the cheapest).
     """
+    found = _INLININGS.get(id(program))
+    if found is None or found[0] is not program:
+        found = (program, _inlinings(program))
+        _INLININGS[id(program)] = found
+        weakref.finalize(program, _INLININGS.pop, id(program), None)
+    return found[1]
+
+
+_INLININGS: dict[int, tuple] = {}
+
+
+def _inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
     plain = inline(program)
     if not trees_within([e for part in plain for e in part]):
-        return [plain], False
+        return [(plain, None)], False
+    forms = [plain]
     evaluated = inline(program, evaluate=True)
-    return ([plain, evaluated] if trees_within([e for part in evaluated for e in part]) else [plain]), True
+    if trees_within([e for part in evaluated for e in part]):
+        forms.append(evaluated)
+    return [(f, cse_operations([*f[0], *f[1], *f[2]])) for f in forms], True
 
 
 def cost(program: Program) -> int:
@@ -117,4 +136,4 @@ def cost(program: Program) -> int:
     forms, small = inlinings(program)
     if not small:
         return operations([*(e for _, e in program.assignments), *program.outputs])
-    return min(cse_operations([*rates, *M, *F]) for rates, M, F in forms)
+    return min(count for _, count in forms)
