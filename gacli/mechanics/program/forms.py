@@ -128,7 +128,11 @@ def _best_turns(forms: list[Form], dependent: list[str]) -> list[tuple]:
 
 def _along_links(a: Form, b: Form, dependent: list[str]) -> list[tuple[sp.Expr, sp.Expr]]:
     """(φ_i, φ_j) that each clear a different dependent column whose entries are a lever of fixed
-    length turning with one angle (x² + y² holds no angle): the pair's rows along those links."""
+    length turning with one angle (x² + y² holds no angle): the pair's rows along those links.
+    Only for a pair whose dependent entries are those two columns alone: the pair's block is then
+    theirs, of determinant l_a l_b sin(θ_a − θ_b), and each new pivot vanishes only where it does."""
+    if sum(1 for q in dependent if a.coefficient(q) != 0 or b.coefficient(q) != 0) != 2:
+        return []
     clearing = []
     for q in dependent:
         x, y = a.coefficient(q), b.coefficient(q)
