@@ -93,12 +93,12 @@ def forces(d: Derivation) -> Section:
     return Section("Generalized forces, eq. (14.13)", tuple(lines))
 
 
-def equations(d: Derivation) -> Section:
-    """∂G/∂u̇_s = Q_s, each Q_s by the name the section above it prints it under."""
+def equations(d: Derivation, by_name: bool = False) -> Section:
+    """∂G/∂u̇_s = Q_s; ``by_name``: each Q_s by the name the section above prints it under."""
     lines = []
     for s, name in enumerate(d.independent):
         lhs, rhs = printed.equation(d, s)
-        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {show(rhs) if rhs == 0 else f'Q_{name}'}")
+        lines.append(f"dG/d({rate_name(name, 2)}): {show(lhs)} = {f'Q_{name}' if by_name and rhs != 0 else show(rhs)}")
         if lhs == 0 and rhs == 0:
             # Said, not left for a reader to find: M is singular and the motion undetermined.
             lines.append(f"  (0 = 0: G holds no {rate_name(name, 2)} and no load does work in {name}: nothing "
@@ -137,13 +137,13 @@ def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
-    header = len(d.system.title or d.system.name) + 1 + L.printed_length([freedom(d)])
+    header = _header(d)
     if not d.closed or not displayable(d) or not L.tidy_worth_trying(d):
         return L.named_of(d, header)
     limit = L.limit(d)
     if printed.coefficients(d, limit) is None:
         return L.named_of(d, header)
-    closed = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
+    closed = written(d)
     length, longest = L.printed_length(closed), L.longest_line(closed)
     if length <= limit and longest <= L.LONGEST_LINE:
         return None
@@ -164,7 +164,22 @@ def derivation_report(d: Derivation) -> tuple[Section, ...]:
     named = long_form(d)
     if named is not None:
         return (freedom(d), *named_sections(d, named))
-    return (freedom(d), rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
+    return (freedom(d), *written(d))
+
+
+def _header(d: Derivation) -> int:
+    """The characters printed before the equations: the title and the degrees of freedom."""
+    return len(d.system.title or d.system.name) + 1 + L.printed_length([freedom(d)])
+
+
+def written(d: Derivation) -> tuple[Section, ...]:
+    """The equations written out: each Q_s again on its equation's right-hand side, or, where that
+    prints past the bound (:func:`gacli.display.long.limit`), by its name: a two-link arm with a
+    spring printed each Q twice, 2,229 characters for 79 operations."""
+    full = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
+    if _header(d) + L.printed_length(full) + len(full) <= L.limit(d):  # a blank line before each section
+        return full
+    return (*full[:3], equations(d, by_name=True), full[4])
 
 
 def gibbs_report(d: Derivation) -> tuple[Section, ...]:
