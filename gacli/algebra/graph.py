@@ -62,8 +62,12 @@ def common_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol
     """
     exprs = list(exprs)
     if trees_within(exprs):
-        return sp.cse(exprs, symbols=symbols, order="canonical")
+        return _sympy_cse(exprs, symbols)
     return shared_subexpressions(exprs, symbols)
+
+
+def _sympy_cse(exprs: list[sp.Basic], symbols: Iterator[sp.Symbol]):
+    return sp.cse(exprs, symbols=symbols, order="canonical")
 
 
 def cse_operations(exprs: Sequence[sp.Basic]) -> int:
@@ -72,7 +76,7 @@ def cse_operations(exprs: Sequence[sp.Basic]) -> int:
     exprs = list(exprs)
     if not trees_within(exprs):
         return operations(exprs)
-    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
+    replacements, reduced = _sympy_cse(exprs, sp.numbered_symbols("_c"))
     return int(sum(sp.count_ops(v) for _, v in replacements) + sum(sp.count_ops(e) for e in reduced))
 
 

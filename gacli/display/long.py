@@ -60,20 +60,14 @@ def named_of(d, header: int = 0) -> N.Named:
         from gacli.mechanics.code import program_for
 
         named = N.from_program(d.program if not d.closed else program_for(d.system), taken)
-        sections = _sections(d, named)
-        if printed_length(sections) + len(sections) + header <= limit(d):  # a blank line before each
+        sections = parts(d, named)
+        if parts_length(sections) + len(sections) + header <= limit(d):  # a blank line before each
             return named
     dependent = {}
     if d.closed:
         dependent = {n: d.rates.rate(n) for n in d.rates.names if n not in d.independent}
     mass = [(key, e) for key, e in code.mass_matrix if key[0] <= key[1]]
     return N.from_closed(code.kinematic_equations, mass, code.forcing, dependent, taken)
-
-
-def _sections(d, named: N.Named) -> list:
-    from types import SimpleNamespace
-
-    return [SimpleNamespace(title=title, lines=lines) for title, lines in parts(d, named)]
 
 
 def parts(d, named: N.Named) -> tuple[tuple[str, tuple[str, ...]], ...]:
@@ -129,7 +123,12 @@ def gibbs_lines(d) -> tuple[str, ...]:
 
 def printed_length(sections) -> int:
     """Characters of sections as ``gacli derive`` prints them (two spaces before each line)."""
-    return sum(len(s.title) + 1 + sum(len(line) + 3 for line in s.lines) for s in sections)
+    return parts_length((s.title, s.lines) for s in sections)
+
+
+def parts_length(parts) -> int:
+    """:func:`printed_length` of (title, lines) pairs."""
+    return sum(len(title) + 1 + sum(len(line) + 3 for line in lines) for title, lines in parts)
 
 
 def longest_line(sections) -> int:

@@ -137,13 +137,13 @@ def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
-    header = _header(d)
+    header = _header(d, freedom(d))
     if not d.closed or not displayable(d) or not L.tidy_worth_trying(d):
         return L.named_of(d, header)
     limit = L.limit(d)
     if printed.coefficients(d, limit) is None:
         return L.named_of(d, header)
-    closed = written(d)
+    closed = written(d, header)
     length, longest = L.printed_length(closed), L.longest_line(closed)
     if length <= limit and longest <= L.LONGEST_LINE:
         return None
@@ -161,23 +161,24 @@ def named_sections(d: Derivation, named) -> tuple[Section, ...]:
 def derivation_report(d: Derivation) -> tuple[Section, ...]:
     """The results of the chapter's solution procedure (section 14.3); through named
     quantities when written out they would be long (:mod:`gacli.display.long`)."""
-    named = long_form(d)
+    named, free = long_form(d), freedom(d)
     if named is not None:
-        return (freedom(d), *named_sections(d, named))
-    return (freedom(d), *written(d))
+        return (free, *named_sections(d, named))
+    return (free, *written(d, _header(d, free)))
 
 
-def _header(d: Derivation) -> int:
+def _header(d: Derivation, free: Section) -> int:
     """The characters printed before the equations: the title and the degrees of freedom."""
-    return len(d.system.title or d.system.name) + 1 + L.printed_length([freedom(d)])
+    return len(d.system.title or d.system.name) + 1 + L.printed_length([free])
 
 
-def written(d: Derivation) -> tuple[Section, ...]:
+def written(d: Derivation, header: int) -> tuple[Section, ...]:
     """The equations written out: each Q_s again on its equation's right-hand side, or, where that
     prints past the bound (:func:`gacli.display.long.limit`), by its name: a two-link arm with a
-    spring printed each Q twice, 2,229 characters for 79 operations."""
+    spring printed each Q twice, 2,229 characters for 79 operations. ``header``: the characters
+    printed before them (:func:`_header`)."""
     full = (rates(d), gibbs_of(d), forces(d), equations(d), kinematic(d))
-    if _header(d) + L.printed_length(full) + len(full) <= L.limit(d):  # a blank line before each section
+    if header + L.printed_length(full) + len(full) <= L.limit(d):  # a blank line before each section
         return full
     return (*full[:3], equations(d, by_name=True), full[4])
 

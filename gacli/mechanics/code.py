@@ -28,13 +28,14 @@ with :mod:`gacli.algebra.graph`, never as trees.
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.graph import cse_operations, operations, trees_within
-from gacli.mechanics.program import Program, build_program, inlinings
+from gacli.algebra.graph import cse_operations, trees_within
+from gacli.mechanics.program import Program, build_program
+from gacli.mechanics.program.record import program_operations
 from gacli.model import System
 
 # Operations of a program past which the closed forms are not formed for code: no
@@ -60,20 +61,19 @@ class CodeEquations:
 
 
 def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
-    """The program's cheapest inlining (:func:`gacli.mechanics.program.inlinings`); past the trees
+    """The program's cheapest inlining (:attr:`Program.inlinings`); past the trees
     SymPy's cse takes, its operations are the program's own (what the one-pass CSE counts to)."""
-    forms, small = inlinings(program)
+    forms, small = program.inlinings
     if not small:
         return _inlined(program, names, *forms[0][0], operations=program_operations(program))
     return min((factored(_inlined(program, names, *f, operations=count)) for f, count in forms),
                key=lambda c: c.operations)
 
 
-def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int | None = None) -> CodeEquations:
+def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int) -> CodeEquations:
     k = program.k
     entries = tuple(((i, j), M[i * k + j]) for i in range(k) for j in range(k) if M[i * k + j] != 0)
-    record = CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), 0)
-    return replace(record, operations=cse_operations(_expressions(record)) if operations is None else operations)
+    return CodeEquations("program", tuple(zip(names, rates)), entries, tuple(F), operations)
 
 
 def _expressions(code: CodeEquations) -> list[sp.Expr]:
@@ -99,10 +99,11 @@ def factored(code: CodeEquations) -> CodeEquations:
     if not trees_within(_expressions(code), FACTORED_TREES):
         return code
     out = sp.factor_terms
-    record = CodeEquations(code.route, tuple((n, out(e)) for n, e in code.kinematic_equations),
-                           tuple((key, out(e)) for key, e in code.mass_matrix), tuple(out(e) for e in code.forcing), 0)
-    record = replace(record, operations=cse_operations(_expressions(record)))
-    return record if record.operations < code.operations else code
+    kinematic = tuple((n, out(e)) for n, e in code.kinematic_equations)
+    mass = tuple((key, out(e)) for key, e in code.mass_matrix)
+    forcing = tuple(out(e) for e in code.forcing)
+    count = cse_operations([*(e for _, e in kinematic), *(e for _, e in mass), *forcing])
+    return CodeEquations(code.route, kinematic, mass, forcing, count) if count < code.operations else code
 
 
 def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
@@ -113,11 +114,6 @@ def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquat
         return from_program(program, names)
     candidates = (closed(), from_program(program, names))
     return min(candidates, key=lambda c: c.operations)  # the closed forms when equal
-
-
-def program_operations(program: Program) -> int:
-    """The program's operations: its assignments and outputs, each repeated piece once."""
-    return operations([*(e for _, e in program.assignments), *program.outputs])
 
 
 class StateNames:

@@ -22,11 +22,11 @@ Modules: ``tape`` (assignments, value numbering, the zero test), ``vectors``,
 from __future__ import annotations
 
 from gacli.mechanics.program.build import program_of
-from gacli.mechanics.program.record import Program, inline, inlinings
+from gacli.mechanics.program.record import Program, inline
 from gacli.mechanics.program.support import Unsupported, static_reason
 from gacli.model import System
 
-__all__ = ["Program", "build_program", "inline", "inlinings", "unsupported"]
+__all__ = ["Program", "build_program", "inline", "unsupported"]
 
 
 def _attempt(system: System) -> Program | str:

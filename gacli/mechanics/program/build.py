@@ -158,8 +158,8 @@ def on_spheres(motion: Motion):
     None without such frames. A quaternion frame's rows (its body rates 2 G(e) ė and its unit
     norm e·ė = 0) are orthogonal, of squared length 4 e·e and e·e, and e·e = 1 is the frame's own
     constraint: the program divides by 4 and 1, as Kane's ½ Eᵀ ω does, where the rows' own
-    lengths cost a sum of squares and a division (a top in a quaternion frame: 73 → 64 operations
-    after SymPy's cse). The closed forms keep e·e; both agree on the sphere, where the motion is
+    lengths cost a sum of squares and a division (a top in a quaternion frame: 73 → 61 operations
+    after SymPy's cse, Kane 64). The closed forms keep e·e; both agree on the sphere, where the motion is
     (tests/test_program.py, tests/test_generated_numeric.py compare them there)."""
     spheres = [e.quaternion for e in motion.tree.edges.values() if e.quaternion is not None]
     if not spheres or not all(x.is_Symbol for q in spheres for x in q):

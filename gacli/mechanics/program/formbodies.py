@@ -24,9 +24,8 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Passes, Sums
-from gacli.mechanics.program import gram
 from gacli.mechanics.program.forms import time_derivative
-from gacli.mechanics.program.gram import Gram
+from gacli.mechanics.program.gram import Gram, add_translation, add_work
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale
@@ -94,7 +93,7 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
         tape.stage = "partials"
         mass = tape.let(body.mass)
         if motion.gram and Gram.takes(motion, body.position):
-            gram.add_translation(motion, mass, body.position, sums)
+            add_translation(motion, mass, body.position, sums)
         else:
             _add_translation(tape, mass, *motion.point(body.position), sums)
         if body.is_rigid:
@@ -104,7 +103,7 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
     for force in system.forces:
         f = tuple(motion.loaded(c) for c in force.vector)
         if motion.gram and Gram.takes(motion, force.point):
-            gram.add_work(motion, force.point, f, sums)
+            add_work(motion, force.point, f, sums)
             continue
         V, _ = motion.point(force.point)
         for r, v in enumerate(V):

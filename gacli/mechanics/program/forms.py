@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import functools
 import itertools
-import random
 from dataclasses import dataclass
 
 import sympy as sp
@@ -33,6 +32,7 @@ from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.algebra.graph import is_small, postorder, shared_subexpressions
 from gacli.mechanics.program.support import Unsupported
+from gacli.numeric.zero import vanishes
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
 from gacli.model import Form, System
@@ -137,13 +137,13 @@ def _along_links(a: Form, b: Form, dependent: list[str]) -> list[tuple[sp.Expr, 
     for q in dependent:
         x, y = a.coefficient(q), b.coefficient(q)
         turning = _angles(Form((("", x),)), Form((("", y),)))
-        if x == 0 or y == 0 or any(not _vanishes(_moved(x * x + y * y, angle)) for angle in turning):
+        if x == 0 or y == 0 or any(not _zero(_moved(x * x + y * y, angle)) for angle in turning):
             continue
         for angle in turning:
             clearing += [(q, phase) for phase in (angle, angle + sp.pi / 2)
-                         if _vanishes(sp.cos(phase) * x + sp.sin(phase) * y)]
+                         if _zero(sp.cos(phase) * x + sp.sin(phase) * y)]
     return [(p, r) for (q, p), (s, r) in itertools.combinations(clearing, 2)
-            if q != s and not _vanishes(sp.sin(r - p))]
+            if q != s and not _zero(sp.sin(r - p))]
 
 
 # Rows past which no pair is turned: each pair is tried about each of its angles.
@@ -156,8 +156,9 @@ def _small(form: Form) -> bool:
     return all(is_small(c, _SMALL) for c in (*(c for _, c in form.coefficients), form.dt))
 
 
-def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
-    """b₀ of the stated rows in closed form, in the rates' symbols, turned as the rows were."""
+def closed_time_derivative(system: System):
+    """d/dt of a small closed form in the coordinates, t and the free functions, in the rates'
+    symbols (dot(q)), and those symbols sorted by name: :func:`time_derivative` without a tape."""
     chain = {S.value(c.name): S.rate(c.name) for c in system.coordinates}
     chain.update(S.function_chain(f.name for f in system.free_functions))
     chain[S.T] = sp.S.One
@@ -165,8 +166,13 @@ def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
     def derivative(e: sp.Expr) -> sp.Expr:
         return sp.Add(*(sp.diff(e, x) * dx for x, dx in chain.items() if e.has(x)))
 
+    return derivative, sorted(set(chain.values()) - {sp.S.One}, key=lambda x: x.name)
+
+
+def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
+    """b₀ of the stated rows in closed form, in the rates' symbols, turned as the rows were."""
+    derivative, rates = closed_time_derivative(system)
     out = [sp.Add(*(derivative(c) * S.rate(q) for q, c in f.coefficients), derivative(f.dt)) for f in rows.stated]
-    rates = sorted(set(chain.values()) - {sp.S.One}, key=lambda x: x.name)
     for i, j, first, second in rows.turns:
         out[i], out[j] = (angles.reduced_by(sp.cos(p) * out[i] + sp.sin(p) * out[j], rates) for p in (first, second))
     return out
@@ -180,25 +186,19 @@ def _clears(a: Form, b: Form, angle: sp.Symbol, dependent: list[str]) -> bool:
         x, y = a.coefficient(q), b.coefficient(q)
         if x == 0 or y == 0:
             continue
-        if any(_vanishes(e) for e in (c * x + s * y, c * y - s * x)):
+        if any(_zero(e) for e in (c * x + s * y, c * y - s * x)):
             return True
     return False
+
+
+def _zero(e: sp.Expr) -> bool:
+    """``e`` is zero identically: expanded when small, else at generic points (the loader's test)."""
+    return vanishes(e, simplify=False)
 
 
 def _moved(e: sp.Expr, angle: sp.Symbol) -> sp.Expr:
     """e at ``angle`` + 0.37 less e: zero when e does not depend on the angle."""
     return e.xreplace({angle: angle + sp.Rational(37, 100)}) - e
-
-
-def _vanishes(e: sp.Expr) -> bool:
-    """``e`` is zero at two generic points (its symbols drawn by name, seeded)."""
-    symbols = sorted(e.free_symbols, key=lambda x: x.name)
-    for seed in (1, 2):
-        rng = random.Random(seed)
-        value = e.xreplace({x: sp.Float(rng.uniform(0.3, 1.7), 30) for x in symbols}).evalf(30)
-        if not value.is_number or abs(complex(value)) > 1e-20:
-            return False
-    return True
 
 
 def _angles(a: Form, b: Form) -> list[sp.Symbol]:

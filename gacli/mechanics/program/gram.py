@@ -26,6 +26,7 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Sums
+from gacli.mechanics.program.forms import closed_time_derivative
 
 # Coordinates a position may hold for its dot products to be taken: G has one entry per pair.
 GRAM_COORDINATES = 4
@@ -67,10 +68,8 @@ class Gram:
     def rest(self) -> dict[str, sp.Expr]:
         """J_q·a_rest for each coordinate held: Σ_l G_ql γ_l + c_q (see the module)."""
         motion, tape = self.motion, self.tape
-        rates = [S.rate(q) for q in motion.coordinates]
-        symbols = {S.value(q): S.rate(q) for q in motion.coordinates}
-        change = [sum((sp.diff(self.J[l][i], x) * dx * S.rate(l) for l in self.held
-                       for x, dx in symbols.items() if self.J[l][i].has(x)), sp.S.Zero) for i in range(3)]
+        derivative, rates = closed_time_derivative(motion.system)
+        change = [sp.Add(*(derivative(self.J[l][i]) * S.rate(l) for l in self.held)) for i in range(3)]
         actual = {S.rate(q): motion.passes.actual.rate(q) for q in motion.coordinates}
         gamma = motion.passes.gamma
         out = {}

@@ -9,7 +9,7 @@ expression graphs sharing their subexpressions.
 
 from __future__ import annotations
 
-import weakref
+import functools
 from dataclasses import dataclass
 
 import sympy as sp
@@ -35,6 +35,11 @@ class Program:
     @property
     def k(self) -> int:
         return len(self.forcing)
+
+    @functools.cached_property
+    def inlinings(self) -> tuple[list[tuple[tuple, int | None]], bool]:
+        """:func:`inlinings` of this program, found once (a frozen dataclass may cache in its __dict__)."""
+        return inlinings(self)
 
     @property
     def outputs(self) -> list[sp.Expr]:
@@ -97,6 +102,10 @@ def inline(program: Program, evaluate: bool = False) -> tuple[list[sp.Expr], lis
     return outputs[:n], outputs[n:n + kk], outputs[n + kk:]
 
 
+def program_operations(program: Program) -> int:
+    """The program's operations: its assignments and outputs, each repeated piece once."""
+    return operations([*(e for _, e in program.assignments), *program.outputs])
+
 
 def inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
     """The forms generated code may take the program in (:func:`inline`), each with its operations
@@ -106,21 +115,9 @@ def inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
     rattleback: 1,195 against 894), but copies a shared sum into each sum it is a term of (the
     bicycle: 1,469 → 2,047 as a graph). Returns ``[((q̇, M, F), operations), ...]`` and whether
     the trees are within that size (past it, the one form's operations are None: the program's
-    own count stands for them). Found once per program (the builder costs its candidates, and
-    generated code then takes the cheapest).
+    own count stands for them). Found once per program (:attr:`Program.inlinings`: the builder
+    costs its candidates, and generated code then takes the cheapest).
     """
-    found = _INLININGS.get(id(program))
-    if found is None or found[0] is not program:
-        found = (program, _inlinings(program))
-        _INLININGS[id(program)] = found
-        weakref.finalize(program, _INLININGS.pop, id(program), None)
-    return found[1]
-
-
-_INLININGS: dict[int, tuple] = {}
-
-
-def _inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
     plain = inline(program)
     if not trees_within([e for part in plain for e in part]):
         return [(plain, None)], False
@@ -133,7 +130,7 @@ def _inlinings(program: Program) -> tuple[list[tuple[tuple, int | None]], bool]:
 
 def cost(program: Program) -> int:
     """The operations of the program's cheapest inlining after the code emitters' CSE."""
-    forms, small = inlinings(program)
+    forms, small = program.inlinings
     if not small:
-        return operations([*(e for _, e in program.assignments), *program.outputs])
+        return program_operations(program)
     return min(count for _, count in forms)
