@@ -41,12 +41,14 @@ def _setup(system: System, independent: tuple[str, ...] | None,
     once the independent rates are known, and only when no form row holds its coordinates."""
     model = system.frames
     coordinates = {c.name: S.value(c.name) for c in system.coordinates}
-    tree = FrameTree(Tape(), model.edges if model is not None else (), coordinates)
+    time = {S.T: ONE, **S.function_chain(f.name for f in system.free_functions)}
+    tree = FrameTree(Tape(), model.edges if model is not None else (), coordinates, time)
     tree.tape.stage = "rows"
     links = {p.name: p for p in model.points} if model is not None else {}
     bodies = {b.name: b for b in model.bodies} if model is not None else {}
     rolling = model.rolling if model is not None else ()
-    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values())) for r in rolling]
+    origins = dict(model.origins) if model is not None else {}
+    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values()), origins) for r in rolling]
     root = R.free_root(links, contacts, coordinates, independent) if independent is not None else None
     if root is not None and set(R.root_coordinates(links, root[0], coordinates)) & forms.names:
         root = None
@@ -113,7 +115,8 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
     if len(kept.directions) + len(forms.forms) != len(dependent):
         raise Unsupported(f"the rows determine {len(kept.directions) + len(forms.forms)} rates, not the "
                           f"{len(dependent)} dependent ones")
-    solver, passes = _rates(motion, columns, forms.dt(motion.tape), independent, dependent)
+    solver, passes = _rates(motion, columns, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
+                            dependent)
     rates = _kinematics(motion, [c.name for c in system.coordinates], at_root, passes.actual)
     passes = _gamma(system, motion, kept, forms, solver, dependent, passes)
     return replace(_dynamics(system, motion, passes, rates, at_root, gram), independent=tuple(independent))
@@ -150,7 +153,7 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
     for qd in dependent:
         rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent), beta0.get(qd, 0)))
     partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
-    return solver, Passes(partial, Pass("actual", rates), Pass("gamma", {}))
+    return solver, Passes(partial, Pass("actual", rates, timed=True), Pass("gamma", {}))
 
 
 def on_spheres(motion: Motion):

@@ -1,4 +1,4 @@
-"""Rolling contacts on N's ground plane: where the body touches, and the velocity of its material point there.
+"""Rolling contacts on a plane: where the body touches, and the velocity of its material point there.
 
 A wheel (axle a along a frame axis) touches at o = −r (n − (n·a)a)/|n − (n·a)a|
 from its geometric centre, n = N.z, the wheel above the plane (as
@@ -13,7 +13,11 @@ lean only. The material point at the contact moves with
 
 P the point the centre hangs from (d its offset along S), c the geometric
 centre's offset from the centre of mass (turned into S) and s the spin
-rate about the axle. Rolling without slipping is v_C = 0 (eq. 14.1).
+rate about the axle. Rolling without slipping on N's ground is v_C = 0
+(eq. 14.1). On the plane z = 0 of a frame P (a turntable, a tilted or
+moving plane), n is P's z axis, o turns with S relative to P, and the rows
+are v_C − v_Q = 0, v_Q = v_O + ω_P × ρ the velocity of P's material point
+at the contact (O P's origin, ρ from O to the contact; gacli.mechanics.program.motion).
 """
 
 from __future__ import annotations
@@ -44,11 +48,14 @@ class Contact:
     inverse: sp.Expr | None  # 1/|n − (n·a)a| (an ellipsoid's: 1/√(nᵀ E n))
     tube: sp.Expr = sp.S.Zero  # a torus's: o is a wheel's − ρ n
     semi_axes: tuple | None = None  # an ellipsoid's (S is the body's frame)
+    plane: str = INERTIAL  # the frame whose plane z = 0 the body rolls on
+    origin: str | None = None  # the point at that frame's origin (None: N's)
 
 
 def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingContact,
-            coordinates: set) -> Contact:
-    """The contact of ``rolling``, its geometry written on the tree's tape."""
+            coordinates: set, origins: dict[str, str]) -> Contact:
+    """The contact of ``rolling``, its geometry written on the tree's tape; ``origins``: the point at
+    a frame's origin, for the frames given one (a frame without one shares its parent's)."""
     frame, spins, axis = body.frame, [], None
     if rolling.axle is not None:
         axis = next(i for i, c in enumerate(rolling.axle) if c != 0)
@@ -59,27 +66,43 @@ def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingC
     fixed = not any(c.free_symbols & coordinates for c in link.components)
     point, offset = (link.parent, link.components) if link.frame == frame and fixed else (body.point, ZV)
     centre = rolling.centre.terms[0][1] if rolling.centre.terms else ZV
+    plane = rolling.on or INERTIAL
+    n = normal(tree, frame, plane)
     if rolling.semi_axes is not None:
-        o, perp, inverse = _ellipsoid_below(tree, frame, rolling.semi_axes)
+        o, perp, inverse = _ellipsoid_below(tree, n, rolling.semi_axes)
     else:
-        o, perp, inverse = _below(tree, frame, axis, rolling.radius)
+        o, perp, inverse = _below(tree, n, axis, rolling.radius)
         if rolling.tube != 0:
-            o = tree.tape.vec(add(o, scale(-rolling.tube, tree.nz(frame))))
+            o = tree.tape.vec(add(o, scale(-rolling.tube, n)))
+    origin = next((origins[f] for f in tree.chain(plane) if f in origins), None)
     return Contact(body, rolling.radius, frame, axis, tuple(spins), point, tuple(offset), tuple(centre),
-                   o, perp, inverse, rolling.tube, rolling.semi_axes)
+                   o, perp, inverse, rolling.tube, rolling.semi_axes, plane, origin)
 
 
-def _ellipsoid_below(tree: FrameTree, frame: str, semi_axes: tuple):
+def normal(tree: FrameTree, frame: str, plane: str) -> tuple:
+    """The plane's normal (its frame's z axis) along ``frame``."""
+    if plane == INERTIAL:
+        return tree.nz(frame)
+    return tree.express((ZERO, ZERO, sp.S.One), plane, frame, key=("normal", plane))
+
+
+def relative_omega(tree: FrameTree, c: Contact, rates: Pass) -> tuple:
+    """ω of S relative to the plane's frame, along S: the turning the contact's geometry sees."""
+    w = tree.omega(c.frame, rates)
+    if c.plane == INERTIAL:
+        return w
+    return tree.tape.vec(add(w, scale(-1, tree.express(tree.omega(c.plane, rates), c.plane, c.frame))))
+
+
+def _ellipsoid_below(tree: FrameTree, n: tuple, semi_axes: tuple):
     """(o, E n, 1/√(nᵀ E n)) along the body's axes, E = diag(a², b², c²): o = −E n/√(nᵀ E n)."""
-    n = tree.nz(frame)
     en = tree.tape.vec([s ** 2 * x for s, x in zip(semi_axes, n)])
     inverse = tree.tape.let(1 / sp.sqrt(dot(en, n)))
     return tree.tape.vec(scale(-inverse, en)), en, inverse
 
 
-def _below(tree: FrameTree, frame: str, axis: int | None, radius: sp.Expr):
+def _below(tree: FrameTree, n: tuple, axis: int | None, radius: sp.Expr):
     """(o, n − (n·a)a, 1/|n − (n·a)a|) along S; a constant direction needs no root."""
-    n = tree.nz(frame)
     if axis is None:
         return tree.tape.vec(scale(-radius, n)), None, None
     perp = tuple(ZERO if i == axis else n[i] for i in range(3))
@@ -102,27 +125,29 @@ def centre_in_s(tree: FrameTree, c: Contact) -> tuple:
 
 
 def o_rate(tree: FrameTree, c: Contact, actual: Pass) -> tuple:
-    """The rate of o's components along S: N.z is fixed, so its components turn as ṅ = n × ω_S."""
-    tape, n = tree.tape, tree.nz(c.frame)
+    """The rate of o's components along S: the normal is fixed in the plane's frame, so its
+    components turn as ṅ = n × ω, ω of S relative to that frame."""
+    tape, n = tree.tape, normal(tree, c.frame, c.plane)
+    w = relative_omega(tree, c, actual)
     if c.semi_axes is not None:
         # o = −E n h⁻¹, h² = nᵀ E n: ȯ = h⁻³ (nᵀ E ṅ) E n − h⁻¹ E ṅ.
-        edot = tape.vec([s ** 2 * x for s, x in zip(c.semi_axes, cross(n, tree.omega(c.frame, actual)))])
+        edot = tape.vec([s ** 2 * x for s, x in zip(c.semi_axes, cross(n, w))])
         along = tape.let(c.inverse ** 3 * dot(n, edot))
         return tape.vec([along * e - c.inverse * d for e, d in zip(c.perp, edot)])
     if c.tube != 0:
-        wheel = _wheel_o_rate(tree, c, actual)
-        return tape.vec(add(wheel, scale(-c.tube, cross(n, tree.omega(c.frame, actual)))))
-    return _wheel_o_rate(tree, c, actual)
+        wheel = _wheel_o_rate(tree, c, n, w)
+        return tape.vec(add(wheel, scale(-c.tube, cross(n, w))))
+    return _wheel_o_rate(tree, c, n, w)
 
 
-def _wheel_o_rate(tree: FrameTree, c: Contact, actual: Pass) -> tuple:
-    """The sphere's or thin wheel's part of :func:`o_rate`."""
-    tape, n = tree.tape, tree.nz(c.frame)
+def _wheel_o_rate(tree: FrameTree, c: Contact, n: tuple, w: tuple) -> tuple:
+    """The sphere's or thin wheel's part of :func:`o_rate` (n the normal, w the relative ω)."""
+    tape = tree.tape
     if c.axis is None:
-        return tape.vec(scale(-c.radius, cross(n, tree.omega(c.frame, actual))))
+        return tape.vec(scale(-c.radius, cross(n, w)))
     if c.perp is None:
         return ZV
-    ndot = tape.vec(cross(n, tree.omega(c.frame, actual)))
+    ndot = tape.vec(cross(n, w))
     ndot = [ZERO if i == c.axis else ndot[i] for i in range(3)]
     dinv = tape.let(-c.inverse ** 3 * dot(c.perp, ndot))
     return tape.vec([-c.radius * (nd * c.inverse + x * dinv) for x, nd in zip(c.perp, ndot)])
@@ -139,18 +164,23 @@ def velocity(tree: FrameTree, c: Contact, v_point: tuple, rates: Pass) -> tuple:
 def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot: tuple) -> tuple:
     """d/dt of v_C with all accelerations zero (the rows' velocity-product term), along S:
     a_P + α × D + ω × (Ḋ + ω × D) + s (a × Ḋ + ω × (a × (c + o))), D = d + c + o, Ḋ = s a × c + ȯ."""
-    tape = tree.tape
     cs = centre_in_s(tree, c)
     w, al = tree.omega(c.frame, actual), tree.alpha0(c.frame, actual)
     s = spin(tree, c, actual) if c.axis is not None else ZERO
-    big_d = add(c.offset, cs, c.o)
-    ddot = add(scale(s, cross(unit(c.axis), cs)), odot) if s != 0 and cs != ZV else odot
-    ddot = tape.vec(ddot)
-    out = add(a_point, cross(al, big_d), cross(w, tape.vec(add(ddot, cross(w, big_d)))))
+    big_d, ddot = lever(tree, c, actual, odot)
+    out = add(a_point, cross(al, big_d), cross(w, tree.tape.vec(add(ddot, cross(w, big_d)))))
     if s != 0:
         a = unit(c.axis)
         out = add(out, scale(s, add(cross(a, ddot), cross(w, cross(a, add(cs, c.o))))))
     return out
+
+
+def lever(tree: FrameTree, c: Contact, actual: Pass, odot: tuple) -> tuple[tuple, tuple]:
+    """D = d + c + o, from P to the contact along S, and the rate of its components, Ḋ = s a × c + ȯ."""
+    cs = centre_in_s(tree, c)
+    s = spin(tree, c, actual) if c.axis is not None else ZERO
+    ddot = add(scale(s, cross(unit(c.axis), cs)), odot) if s != 0 and cs != ZV else odot
+    return add(c.offset, cs, c.o), tree.tape.vec(ddot)
 
 
 def row_vectors(tree: FrameTree, c: Contact) -> list[tuple]:
@@ -159,4 +189,4 @@ def row_vectors(tree: FrameTree, c: Contact) -> list[tuple]:
     so the rows are as sparse as the geometry allows. A sphere's along S's axes."""
     if c.axis is None:
         return [unit(0), unit(1), unit(2)]
-    return [tree.tape.vec(cross(unit(c.axis), c.o)), unit(c.axis), tree.nz(c.frame)]
+    return [tree.tape.vec(cross(unit(c.axis), c.o)), unit(c.axis), normal(tree, c.frame, c.plane)]

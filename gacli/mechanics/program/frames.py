@@ -6,7 +6,8 @@ merged into one, by the sum of their angles (a bicycle's head tube turned
 by pitch + head angle). ω of a frame comes from its parent's by the
 transport theorem, ω_F = Rᵀ ω_G + Σ θ̇ e, for any pass of rates (see
 :class:`~gacli.mechanics.program.vectors.Pass`); α with all accelerations
-zero, the velocity-product part of eq. (14.14), is α_F = Rᵀ α_G + (Σ θ̇) ω_F × e.
+zero, the velocity-product part of eq. (14.14), is α_F = Rᵀ α_G + (Σ θ̇) ω_F × e, plus
+(Σ θ_tt) e where an angle holds time (a turntable driven at a prescribed angle).
 
 A frame turned by a quaternion (an edge with ``quaternion``) is one general
 rotation: its nine direction cosines named once, ω_F = Rᵀ ω_G + ω_rel with
@@ -27,11 +28,15 @@ from gacli.mechanics.program.vectors import ONE, ZERO, ZV, Pass, add, cross, sca
 class FrameTree:
     """The frame tree on a tape; a builder object whose caches write each ω, α, N.z once per frame and pass."""
 
-    def __init__(self, tape: Tape, edges: tuple[FrameEdge, ...], coordinates: dict[str, sp.Symbol]) -> None:
+    def __init__(self, tape: Tape, edges: tuple[FrameEdge, ...], coordinates: dict[str, sp.Symbol],
+                 time: dict[sp.Symbol, sp.Expr] | None = None) -> None:
         self.tape = tape
         self.edges = {e.name: e for e in edges}
-        # θ̇ of each edge as Σ (∂θ/∂q) q̇: the angles are linear in the coordinates (support.py).
+        # θ̇ of each edge as Σ (∂θ/∂q) q̇ + θ_t: the angles are linear in the coordinates, with
+        # coefficients free of time (support.py), so θ̈ = Σ (∂θ/∂q) q̈ + θ_tt.
         self.grad = {e.name: {q: sp.diff(e.angle, s) for q, s in coordinates.items() if e.angle.has(s)} for e in edges}
+        self.time = time or {}
+        self._timed = {e.name: time_rate(e.angle, self.time) for e in edges}
         self.names = {s: q for q, s in coordinates.items()}
         self._rotation: dict = {}
         self._omega: dict = {}
@@ -125,8 +130,13 @@ class FrameTree:
         return top, e.axis, edges
 
     def rate(self, edge: str, rates: Pass) -> sp.Expr:
-        """θ̇ of one edge for the pass's coordinate rates."""
-        return sp.Add(*(k * rates.rate(q) for q, k in self.grad[edge].items()))
+        """θ̇ of one edge for the pass's coordinate rates (and θ_t for a timed pass)."""
+        rate = sp.Add(*(k * rates.rate(q) for q, k in self.grad[edge].items()))
+        return rate + self.tape.let(self._timed[edge]) if rates.timed and self._timed[edge] != 0 else rate
+
+    def time_acceleration(self, edges: list[str]) -> sp.Expr:
+        """Σ θ_tt of the edges: the part of their angular acceleration that no q̈ holds."""
+        return sp.Add(*(self.tape.let(time_rate(self._timed[e], self.time)) for e in edges if self._timed[e] != 0))
 
     def omega(self, frame: str, rates: Pass) -> tuple:
         """ω of the frame along its own axes for the pass: ω_F = Rᵀ ω_G + Σ θ̇ e."""
@@ -153,8 +163,11 @@ class FrameTree:
             rate = sp.Add(*(self.rate(e, actual) for e in edges))
             if axis < 0:
                 a = add(a, cross(self.omega(frame, actual), self.relative(frame, actual)))
-            elif rate != 0:
-                a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
+            else:
+                if rate != 0:
+                    a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
+                if actual.timed:
+                    a = add(a, scale(self.time_acceleration(edges), unit(axis)))
             self._alpha[frame] = self.tape.vec(a, name=("alpha", frame, actual.key))
         return self._alpha[frame]
 
@@ -173,5 +186,10 @@ class FrameTree:
         return self.turn(e.axis, e.angle if up else -e.angle, v)
 
     def constant(self, edge: str) -> bool:
-        """The edge's angle depends on no coordinate (a quaternion's always does)."""
-        return not self.grad[edge] and self.edges[edge].quaternion is None
+        """The edge's angle depends on no coordinate and not on time (a quaternion's always moves)."""
+        return not self.grad[edge] and self._timed[edge] == 0 and self.edges[edge].quaternion is None
+
+
+def time_rate(e: sp.Expr, time: dict[sp.Symbol, sp.Expr]) -> sp.Expr:
+    """∂e/∂t along the time chain (t → 1, a free function → its rate), the coordinates held still."""
+    return sp.Add(*(sp.diff(e, x) * dx for x, dx in time.items() if e.has(x)))

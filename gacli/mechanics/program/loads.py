@@ -12,8 +12,7 @@ partial velocities. A torque acts on its body's unit, and on a wheel's spin
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
+from dataclasses import dataclass, field, replace
 
 from gacli.frame_model import INERTIAL, FrameVector, Load, PointLink
 from gacli.mechanics.program.frames import FrameTree
@@ -54,7 +53,7 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
     """Each unit's loads, and the forces at points of no unit [(point, components along its frame)]."""
     shares = [UnitLoads() for _ in units]
     loose = []
-    for load in loads:
+    for load in (_spelled_out(load, links) for load in loads):
         if load.torque:
             i = next(i for i, u in enumerate(units) if u.holds(load.body))
             shares[i].torques.append((load.body, along(tree, load.vector, units[i].frame, rates)))
@@ -71,6 +70,18 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
             f = along(tree, load.vector, units[i].frame, rates)
             shares[i].moment = add(shares[i].moment, cross(tuple(lever), f))
     return shares, loose
+
+
+def _spelled_out(load: Load, links: dict[str, PointLink]) -> Load:
+    """A load written with ``from`` (or as a point's name): that point's position is the sum of its
+    chain's offsets, each along its own frame, so its terms join the load's."""
+    if load.vector.origin is None:
+        return load
+    terms, point = list(load.vector.terms), load.vector.origin
+    while point is not None:
+        terms.append((links[point].frame, links[point].components))
+        point = links[point].parent
+    return replace(load, vector=FrameVector(tuple(terms)))
 
 
 def _carrier(tree, links, units: list[Unit], point: str, coordinates: set):

@@ -4,7 +4,8 @@ A point is a chain of links (gacli.frame_model.PointLink); its velocity for
 a pass of rates ρ is its parent's plus ω × p plus the rate of p's own
 components (transport theorem), along the frame of its last link; its
 acceleration with all accelerations zero (the velocity-product part of
-eq. 14.14) is a_parent + α₀ × p + ω × (ω × p) + 2 ω × ṗ + p̈₀.
+eq. 14.14) is a_parent + α₀ × p + ω × (ω × p) + 2 ω × ṗ + p̈₀. Components that hold time
+add ∂p/∂t to the actual velocity (a timed pass) and their time terms to p̈₀.
 
 A *free root* is a point at N's origin whose N components are dependent
 coordinates, (x, y, 0) of a vehicle on the ground, above a rolling contact:
@@ -19,7 +20,7 @@ import sympy as sp
 
 from gacli.frame_model import INERTIAL, PointLink
 from gacli.mechanics.program import contacts as C
-from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.frames import FrameTree, time_rate
 from gacli.mechanics.program.vectors import ZV, Pass, add, cross, scale
 
 
@@ -78,9 +79,12 @@ class Motion:
         return point
 
     def _moving(self, link: PointLink, rates: Pass) -> tuple:
-        """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q."""
-        return tuple(sp.Add(*(sp.diff(x, s) * rates.rate(q) for q, s in self.coordinates.items() if x.has(s)))
-                     for x in link.components)
+        """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q (+ ∂p/∂t for a timed pass)."""
+        return tuple(self._rate(x, rates) for x in link.components)
+
+    def _rate(self, x: sp.Expr, rates: Pass) -> sp.Expr:
+        moved = sp.Add(*(sp.diff(x, s) * rates.rate(q) for q, s in self.coordinates.items() if x.has(s)))
+        return moved + time_rate(x, self.tree.time) if rates.timed else moved
 
     def acceleration0(self, point: str | None, actual: Pass, frame: str | None = None,
                       zero_root: bool = False) -> tuple:
@@ -109,21 +113,51 @@ class Motion:
         return self.tape.vec(a, name=None if zero_root else ("a", point, actual.key, link.frame)), link.frame
 
     def _moving2(self, link: PointLink, actual: Pass) -> tuple:
-        """p̈ with all accelerations zero: Σ ∂²p/∂q∂q' q̇ q̇'."""
-        out = []
-        for x in link.components:
-            first = sp.Add(*(sp.diff(x, s) * actual.rate(q) for q, s in self.coordinates.items() if x.has(s)))
-            out.append(sp.Add(*(sp.diff(first, s) * actual.rate(q) for q, s in self.coordinates.items()
-                                if first.has(s))))
-        return tuple(out)
+        """p̈ with all accelerations zero: Σ ∂²p/∂q∂q' q̇ q̇' (and the terms of ∂/∂t, when timed)."""
+        return tuple(self._rate(self._rate(x, actual), actual) for x in link.components)
 
     def contact_velocity(self, c: C.Contact, rates: Pass, zero_root: bool = False) -> tuple:
-        """v of the body's material point at the contact, along S."""
-        return C.velocity(self.tree, c, self.velocity(c.point, rates, c.frame, zero_root), rates)
+        """v of the body's material point at the contact relative to the plane's, v_C − v_Q, along S."""
+        v = C.velocity(self.tree, c, self.velocity(c.point, rates, c.frame, zero_root), rates)
+        if c.plane == INERTIAL:
+            return v
+        w = self.tree.express(self.tree.omega(c.plane, rates), c.plane, c.frame)
+        v_q = add(self.velocity(c.origin, rates, c.frame), cross(w, self._reach(c)))
+        return self.tape.vec(add(v, scale(-1, v_q)))
 
     def contact_acceleration0(self, c: C.Contact, actual: Pass, zero_root: bool = False) -> tuple:
-        """Its derivative with all accelerations zero, along S."""
+        """Its derivative with all accelerations zero, along S: on a frame's plane, less
+        a_O + α_P × ρ + ω_P × ρ̇, ρ̇ = v_P − v_O + ω_S × D + Ḋ."""
         if c.body.name not in self._odot:
             self._odot[c.body.name] = C.o_rate(self.tree, c, actual)
+        odot = self._odot[c.body.name]
         a_point = self.acceleration0(c.point, actual, c.frame, zero_root)
-        return C.acceleration(self.tree, c, a_point, actual, self._odot[c.body.name])
+        a = C.acceleration(self.tree, c, a_point, actual, odot)
+        if c.plane == INERTIAL:
+            return a
+        tree = self.tree
+        w = tree.express(tree.omega(c.plane, actual), c.plane, c.frame)
+        al = tree.express(tree.alpha0(c.plane, actual), c.plane, c.frame)
+        big_d, ddot = C.lever(tree, c, actual, odot)
+        rho_dot = add(self.velocity(c.point, actual, c.frame), scale(-1, self.velocity(c.origin, actual, c.frame)),
+                      cross(tree.omega(c.frame, actual), big_d), ddot)
+        a_q = add(self.acceleration0(c.origin, actual, c.frame), cross(al, self._reach(c)),
+                  cross(w, self.tape.vec(rho_dot)))
+        return self.tape.vec(add(a, scale(-1, a_q)))
+
+    def _reach(self, c: C.Contact) -> tuple:
+        """ρ, from the plane's origin to the contact, along S."""
+        key = ("reach", c.body.name)
+        if key not in self._velocity:
+            d = C.lever(self.tree, c, Pass("still", {}), ZV)[0]
+            self._velocity[key] = self.tape.vec(add(self.position(c.point, c.frame),
+                                                    scale(-1, self.position(c.origin, c.frame)), d))
+        return self._velocity[key]
+
+    def position(self, point: str | None, frame: str) -> tuple:
+        """The point's position from N's origin, along ``frame``."""
+        if point is None:
+            return ZV
+        link = self.links[point]
+        return self.tape.vec(add(self.position(link.parent, frame),
+                                 self.tree.express(link.components, link.frame, frame)))

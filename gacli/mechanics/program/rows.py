@@ -54,7 +54,7 @@ def free_root(links: dict[str, PointLink], contacts: list[C.Contact], coordinate
         if not own or any(x.free_symbols & symbols.keys() for x in rest) or set(own) & set(independent):
             continue
         best = None
-        for c in contacts:
+        for c in (c for c in contacts if c.plane == INERTIAL):  # a frame's plane moves under the root
             depth, point = 0, c.body.point
             while point is not None and point != root.name:
                 point, depth = links[point].parent, depth + 1
@@ -94,6 +94,15 @@ def rows(motion: Motion, contacts: list[C.Contact], reduced: list[str]) -> Rows:
         if rank(numeric[kept + [i]]) > len(kept):
             kept.append(i)
     return Rows(tuple(directions[i] for i in kept), {q: [col[i] for i in kept] for q, col in columns.items()})
+
+
+def time_column(motion: Motion, kept: Rows) -> list[sp.Expr]:
+    """a₀ of the kept rows: v_C − v_Q with every rate zero and ṫ = 1 (a plane moved or turned with
+    time), vanishing entries zero."""
+    tape, still = motion.tape, Pass("time", {}, timed=True)
+    velocities = {c.body.name: motion.contact_velocity(c, still) for c, _ in kept.directions}
+    column = [dot(e, velocities[c.body.name]) for c, e in kept.directions]
+    return [ZERO if tape.vanishes(x) else tape.let(x) for x in column]
 
 
 def earliest_independent(numeric: np.ndarray, names: list[str]) -> tuple[str, ...]:

@@ -79,20 +79,18 @@ def _expressions(value):
 
 
 def _frames(system: System, model: FrameModel) -> str | None:
-    # A frame's origin moves only the plane a body rolls on (`on:`, refused below): vectors in
+    # A frame's origin moves only the plane a body rolls on (`on:`, contacts.py): vectors in
     # frames are free vectors (docs/frames.md), so the origin enters nothing else the program forms.
     coordinates = [S.value(c.name) for c in system.coordinates]
     for edge in model.edges:
         if edge.quaternion is not None and edge.parent != INERTIAL:
             # The units' search for frames where an inertia is constant (units.py) knows simple turns only.
             return f"frame '{edge.name}' is turned by a quaternion from a frame other than N"
-        if _timed(edge.angle, system):
-            return f"the angle of frame '{edge.name}' depends on time"
-        if any(sp.diff(edge.angle, q).free_symbols & set(coordinates) for q in coordinates if edge.angle.has(q)):
-            return f"the angle of frame '{edge.name}' is not linear in the coordinates"
-    for link in model.points:
-        if any(_timed(c, system) for c in link.components):
-            return f"the position of point '{link.name}' depends on time"
+        if edge.quaternion is not None and any(_timed(e, system) for e in edge.quaternion):
+            return f"frame '{edge.name}' is turned by a quaternion that depends on time"
+        if any(_timed(sp.diff(edge.angle, q), system) or sp.diff(edge.angle, q).free_symbols & set(coordinates)
+               for q in coordinates if edge.angle.has(q)):
+            return f"the angle of frame '{edge.name}' is not linear in the coordinates with constant coefficients"
     return None
 
 
@@ -106,8 +104,6 @@ def _bodies(system: System, model: FrameModel) -> str | None:
 def _rolling(system: System, model: FrameModel) -> str | None:
     frames = {b.name: b.frame for b in model.bodies}
     for contact in model.rolling:
-        if contact.on is not None:
-            return f"rolling on the plane of frame '{contact.on}' (not N's) is not supported"
         if contact.axle is not None and sum(1 for c in contact.axle if c != 0) != 1:
             return f"the axle of '{contact.body}' is not along one of its frame's axes"
         if not _in_own_axes(contact.centre, frames[contact.body]):
@@ -121,10 +117,6 @@ def _in_own_axes(vector: FrameVector, frame: str | None) -> bool:
 
 def _loads(system: System, model: FrameModel) -> str | None:
     for load in model.loads:
-        if load.vector.origin is not None:
-            return "a load written with 'from' or as a point's name is not supported"
         if any(f is None for f, _ in load.vector.terms):
             return f"a torque on '{load.body}' is given in body axes of format-1 forms"
-        if any(_timed(c, system) for _, v in load.vector.terms for c in v):
-            return "a load that depends on time is not supported"
     return None

@@ -21,10 +21,13 @@ ZV = (ZERO, ZERO, ZERO)
 
 @dataclass(frozen=True, eq=False)
 class Pass:
-    """Coordinate rates ρ (coordinate name → expression; absent: 0), named by ``key`` for the caches."""
+    """Coordinate rates ρ (coordinate name → expression; absent: 0), named by ``key`` for the caches;
+    ``timed``: with ṫ = 1, so that angles and positions that hold time add their ∂/∂t (the actual
+    velocities, and the rows' a₀), where a partial velocity or γ has none."""
 
     key: str
     rho: Mapping[str, sp.Expr]
+    timed: bool = False
 
     def rate(self, name: str) -> sp.Expr:
         return self.rho.get(name, ZERO)
