@@ -22,7 +22,7 @@ from gacli.mechanics.program import rows as R
 from gacli.mechanics.program.assemble import Passes, Sums, assemble
 from gacli.mechanics.program.contacts import contact
 from gacli.mechanics.program.formbodies import FormMotion, assemble_bodies
-from gacli.mechanics.program.forms import TURNINGS, FormRows, form_rows
+from gacli.mechanics.program.forms import TURNINGS, FormRows, form_rows, rates_held
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
@@ -110,6 +110,8 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
         if turning >= len(turnings):
             return None
         forms = turnings[turning]
+    if rates_held(forms, dependent):
+        raise Unsupported(f"a constraint nonlinear in the rates holds the dependent rate '{rates_held(forms, dependent)[0]}'")
     others = [c for c in contacts if root is None or c is not root[1]]
     kept, columns = _columns(motion, others, forms, reduced)
     if len(kept.directions) + len(forms.forms) != len(dependent):

@@ -35,7 +35,7 @@ from gacli.mechanics.program.support import Unsupported
 from gacli.numeric.zero import vanishes
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
-from gacli.model import Form, System
+from gacli.model import Form, RateRelation, System
 
 
 @dataclass(frozen=True)
@@ -231,16 +231,32 @@ def _entry(tape: Tape, e: sp.Expr) -> sp.Expr:
 
 
 def form_rows(system: System) -> FormRows:
-    """The system's rows stated as forms (see the module); Unsupported for a constraint nonlinear in the rates."""
+    """The system's rows stated as forms (see the module)."""
     forms = []
     for c in system.constraints:
         if c.derived:
             continue
-        if c.rates is not None:
-            raise Unsupported("a constraint nonlinear in the rates is not supported")
-        forms.append(c.form)
+        forms.append(c.form if c.rates is None else _solved(c.form, c.rates))
     forms += [q.definition for q in system.quasi_coordinates if q.definition is not None]
     return FormRows(tuple(forms))
+
+
+def _solved(form: Form, relation: RateRelation) -> Form:
+    """A relation g(q, ṙ, t) = 0 nonlinear in the rates as its linearization A ṙ + a₀ = g (A = ∂g/∂ṙ,
+    gacli.loader.nonlinear), the dependent rate in A and a₀ replaced by its solution. Solved by the
+    rows, the dependent rate is then f exactly, the partial velocities Chetaev's ∂f/∂u, and
+    b₀ = Σ ∂g/∂q q̇ + ∂g/∂t, the coefficients' d/dt with the rates held (forms.rest): a term that
+    the solution's own rate of change adds is Σ_s ∂A_s/∂ṙ_d ṙ_s + ∂a₀/∂ṙ_d, which vanishes since
+    g = A ṙ + a₀ for every ṙ. The rows' other rates must be independent (build.py checks)."""
+    solution = {S.rate(relation.dependent): relation.solution}
+    return Form(tuple((q, c.xreplace(solution)) for q, c in form.coefficients), form.dt.xreplace(solution))
+
+
+def rates_held(forms: FormRows, dependent) -> list[str]:
+    """The dependent rates the rows' entries hold (a relation nonlinear in the rates written with two
+    of them): the rows would then not be linear in the dependent rates."""
+    entries = [c for f in forms.forms for c in (*(c for _, c in f.coefficients), f.dt)]
+    return [q for q in dependent if any(c.has(S.rate(q)) for c in entries)]
 
 
 def time_derivative(system: System, actual: Pass, tape: Tape):

@@ -3,8 +3,9 @@
 The builder works from the frame model (gacli.frame_model) of a file
 written with frames, or from the bodies' positions and rotation forms of
 one without (format 1), with every row the file states as a form
-(constraints, knife edges, quasi-coordinates) and the rolling contacts on
-N's ground plane. :func:`static_reason` says what rules a file out before
+(constraints, those nonlinear in the rates too, knife edges,
+quasi-coordinates) and the rolling contacts on any frame's plane, frames,
+points and loads moving with time included. :func:`static_reason` says what rules a file out before
 any building (docs/program.md, "What the program takes"); the build itself
 can still refuse (:class:`Unsupported`), e.g. when the rows leave a coupled
 block larger than the adjugate solve takes.
@@ -28,8 +29,6 @@ class Unsupported(Exception):
 def static_reason(system: System) -> str | None:
     """Why the builder does not take ``system`` (one sentence), or None when nothing rules it out yet."""
     model = system.frames
-    if any(c.rates is not None for c in system.constraints):
-        return "constraints nonlinear in the rates are not supported"
     if model is None:
         return _small_numbers(system, None)
     for check in (_small_numbers, _frames, _bodies, _rolling, _loads):

@@ -1,8 +1,9 @@
-"""The program on planes and frames that move with time (gacli.mechanics.program: frames, motion, contacts).
+"""The program on the vocabulary it took last (gacli.mechanics.program: frames, motion, contacts, forms).
 
 A frame turned by a prescribed angle (a turntable), a point moved with time
-(a plate's origin) and a body rolling on the plane of such a frame: the
-program's q̇, M and F agree with the closed forms (the chapter's route,
+(a plate's origin), a body rolling on the plane of such a frame, loads that
+hold time, and constraints nonlinear in the rates: the program's q̇, M and
+F agree with the closed forms (the chapter's route,
 gacli.mechanics.equations) at random states and at random times, not only
 at t = 0, where a term in sin(Ω t) would vanish unseen.
 """
@@ -149,3 +150,33 @@ def test_an_angle_whose_coefficient_holds_time_is_refused():
     # θ = t·yaw: θ̈ then holds 2 yaw_dot, a product of time and a rate the passes do not form.
     text = DRIVEN_TABLE.replace("[z, yaw]", "[z, t*yaw]")
     assert "constant coefficients" in unsupported(loads(text))
+
+
+# The relations of tests/test_nonlinear.py (Appell-Hamel's particle, and rheonomic and implicit
+# writings of it): the program solves the linearized row for ż with the relation's own solution
+# in its coefficients (forms._solved).
+RELATION_HEADER = """\
+gacli: 1
+name: ah
+parameters: {m: {value: 1}, g: {value: 9.81}, c: {value: 0.5}, v: {value: 0.3}}
+coordinates: [x, y, z]
+bodies:
+  p: {mass: m, position: [x, y, z]}
+potential: m*g*z
+constraints:
+  - """
+
+
+@pytest.mark.parametrize("relation", [
+    "dz = -c*sqrt(dx**2 + dy**2)",
+    "dot(z) = -c*sqrt(dot(x)**2 + dot(y)**2) + v*sin(t)",
+    "c*sqrt(dot(x)**2 + dot(y)**2) + 2*dot(z) + x*dot(x) = 0",
+])
+def test_constraints_nonlinear_in_the_rates(relation):
+    _agrees_at_random_times(loads(RELATION_HEADER + relation + "\n"))
+
+
+def test_a_relation_holding_another_dependent_rate_is_refused():
+    text = RELATION_HEADER.replace("[x, y, z]", "[x, y, z, w]", 1) + "dot(z) = -c*sqrt(dot(x)**2 + dot(w)**2)\n  - dw = y*dx\n"
+    text = text.replace("coordinates: [x, y, z, w]", "coordinates: [x, y, z, w]\nindependent: [x, y]")
+    assert "holds the dependent rate 'w'" in unsupported(loads(text))
