@@ -121,10 +121,11 @@ def test_the_program_agrees_with_the_closed_forms_or_says_why_not(path):
 
 
 def test_refusals_name_their_reason():
-    text = (BICYCLE.parent / "rolling_disk.yaml").read_text(encoding="utf-8").replace("[z, yaw]", "[z, yaw**2]")
+    text = (ROOT / "benchmarks" / "kane_set" / "quaternion_frame_top.yaml").read_text(encoding="utf-8")
+    text = text.replace("frames:\n  top: {", "frames:\n  tilted: {rotations: [[x, 0.1]]}\n  top: {parent: tilted, ")
     system = loads(text)
     assert build_program(system) is None
-    assert "not linear in the coordinates" in unsupported(system)
+    assert "quaternion from a frame other than N" in unsupported(system)
 
 
 def test_a_frame_origin_enters_only_a_rolling_plane_and_is_taken():

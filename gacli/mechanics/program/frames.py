@@ -7,7 +7,8 @@ by pitch + head angle). ω of a frame comes from its parent's by the
 transport theorem, ω_F = Rᵀ ω_G + Σ θ̇ e, for any pass of rates (see
 :class:`~gacli.mechanics.program.vectors.Pass`); α with all accelerations
 zero, the velocity-product part of eq. (14.14), is α_F = Rᵀ α_G + (Σ θ̇) ω_F × e, plus
-(Σ θ_tt) e where an angle holds time (a turntable driven at a prescribed angle).
+(Σ θ̈ with q̈ = 0) e where an angle holds time (a turntable driven at a prescribed angle) or is
+not linear in the coordinates.
 
 A frame turned by a quaternion (an edge with ``quaternion``) is one general
 rotation: its nine direction cosines named once, ω_F = Rᵀ ω_G + ω_rel with
@@ -32,8 +33,7 @@ class FrameTree:
                  time: dict[sp.Symbol, sp.Expr] | None = None) -> None:
         self.tape = tape
         self.edges = {e.name: e for e in edges}
-        # θ̇ of each edge as Σ (∂θ/∂q) q̇ + θ_t: the angles are linear in the coordinates, with
-        # coefficients free of time (support.py), so θ̈ = Σ (∂θ/∂q) q̈ + θ_tt.
+        # θ̇ of each edge as Σ (∂θ/∂q) q̇ + θ_t; θ̈ adds what held_acceleration says.
         self.grad = {e.name: {q: sp.diff(e.angle, s) for q, s in coordinates.items() if e.angle.has(s)} for e in edges}
         self.time = time or {}
         self._timed = {e.name: time_rate(e.angle, self.time) for e in edges}
@@ -134,9 +134,15 @@ class FrameTree:
         rate = sp.Add(*(k * rates.rate(q) for q, k in self.grad[edge].items()))
         return rate + self.tape.let(self._timed[edge]) if rates.timed and self._timed[edge] != 0 else rate
 
-    def time_acceleration(self, edges: list[str]) -> sp.Expr:
-        """Σ θ_tt of the edges: the part of their angular acceleration that no q̈ holds."""
-        return sp.Add(*(self.tape.let(time_rate(self._timed[e], self.time)) for e in edges if self._timed[e] != 0))
+    def held_acceleration(self, edges: list[str], actual: Pass) -> sp.Expr:
+        """Σ θ̈ of the edges with every q̈ zero: θ̇'s d/dt with the rates held, Σ ∂²θ/∂q∂q' q̇ q̇'
+        + 2 Σ ∂²θ/∂q∂t q̇ + θ_tt; zero for an angle linear in the coordinates and not in time."""
+        total = []
+        for e in edges:
+            rate = sp.Add(*(k * actual.rate(q) for q, k in self.grad[e].items()), self._timed[e])
+            moved = sp.Add(*(sp.diff(rate, s) * actual.rate(q) for s, q in self.names.items() if rate.has(s)))
+            total.append(moved + time_rate(rate, self.time))
+        return self.tape.let(sp.Add(*total))
 
     def omega(self, frame: str, rates: Pass) -> tuple:
         """ω of the frame along its own axes for the pass: ω_F = Rᵀ ω_G + Σ θ̇ e."""
@@ -166,8 +172,9 @@ class FrameTree:
             else:
                 if rate != 0:
                     a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
-                if actual.timed:
-                    a = add(a, scale(self.time_acceleration(edges), unit(axis)))
+                held = self.held_acceleration(edges, actual)
+                if held != 0:
+                    a = add(a, scale(held, unit(axis)))
             self._alpha[frame] = self.tape.vec(a, name=("alpha", frame, actual.key))
         return self._alpha[frame]
 
