@@ -180,3 +180,18 @@ def test_a_relation_holding_another_dependent_rate_is_refused():
     text = RELATION_HEADER.replace("[x, y, z]", "[x, y, z, w]", 1) + "dot(z) = -c*sqrt(dot(x)**2 + dot(w)**2)\n  - dw = y*dx\n"
     text = text.replace("coordinates: [x, y, z, w]", "coordinates: [x, y, z, w]\nindependent: [x, y]")
     assert "holds the dependent rate 'w'" in unsupported(loads(text))
+
+
+QUATERNION_TOP = (ROOT / "benchmarks" / "kane_set" / "quaternion_frame_top.yaml").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("inertia", ["[A, A, C]", "[A, A, A]"])
+def test_a_quaternion_frame_on_a_turning_arm(inertia):
+    # A frame turned by Euler parameters from a frame that turns: the units never carry an inertia
+    # across the quaternion's edge (about no one axis, never constant), symmetric or not.
+    text = QUATERNION_TOP.replace("coordinates: [q0, q1, q2, q3]", "coordinates: [q0, q1, q2, q3, a]")
+    text = text.replace("independent: [w_1, w_2, w_3]", "independent: [w_1, w_2, w_3, a]")
+    text = text.replace("frames:\n  top: {", "frames:\n  arm: {rotations: [[z, a], [x, 0.3]]}\n  top: {parent: arm, ")
+    text = text.replace("inertia: [A, A, C]", f"inertia: {inertia}")
+    text = text.replace("bodies:\n", "bodies:\n  arm: {mass: m, position: {arm: [0.1, 0, 0]}, frame: arm, inertia: [A, C, A]}\n")
+    _agrees_at_random_times(loads(text))

@@ -81,9 +81,6 @@ def _frames(system: System, model: FrameModel) -> str | None:
     # A frame's origin moves only the plane a body rolls on (`on:`, contacts.py): vectors in
     # frames are free vectors (docs/frames.md), so the origin enters nothing else the program forms.
     for edge in model.edges:
-        if edge.quaternion is not None and edge.parent != INERTIAL:
-            # The units' search for frames where an inertia is constant (units.py) knows simple turns only.
-            return f"frame '{edge.name}' is turned by a quaternion from a frame other than N"
         if edge.quaternion is not None and any(_timed(e, system) for e in edge.quaternion):
             return f"frame '{edge.name}' is turned by a quaternion that depends on time"
     return None

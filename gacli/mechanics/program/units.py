@@ -96,6 +96,8 @@ def placements(tree: FrameTree, body: BodyPlacement) -> dict[str, Placement]:
 def _across(tree: FrameTree, here: Placement, edge: str, there: str, up: bool) -> Placement | None:
     """The placement one edge away: a spin about a symmetry axis, or a constant rotation."""
     axis, constant = tree.edges[edge].axis, tree.constant(edge)
+    if axis < 0:  # a quaternion's turn is about no one axis, and never constant
+        return None
     along = all(all(v[i] == 0 for i in range(3) if i != axis) for _, _, v in here.spins)
     if _invariant(here.inertia, axis) and along:
         spins = here.spins + (() if constant else ((edge, 1 if up else -1, unit(axis)),))
