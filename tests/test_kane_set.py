@@ -25,7 +25,7 @@ for _path in (ROOT / "benchmarks" / "kane_set", ROOT / "benchmarks"):
 
 import gacli  # noqa: E402
 
-SMALL = ["four_bar", "four_bar_coincide", "planar_chain", "quaternion_body", "quaternion_frame_body",
+SMALL = ["four_bar", "four_bar_coincide", "planar_chain", "quaternion_body", "quaternion_top", "quaternion_frame_body",
          "quaternion_frame_top", "cart_pole", "double_cart_pendulum", "rolling_disc", "rolling_disc_rates"]
 TOLERANCE = 1e-10
 

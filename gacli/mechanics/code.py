@@ -98,12 +98,38 @@ def factored(code: CodeEquations) -> CodeEquations:
     forms are taken as the chapter's route gives them, tidied for print as they are printed."""
     if not trees_within(_expressions(code), FACTORED_TREES):
         return code
-    out = sp.factor_terms
+    candidates = [code, _each(code, sp.factor_terms)]
+    if any(_rational(e) for e in _expressions(code)):
+        candidates.append(_each(code, lambda e: _divided(e) if _rational(e) else sp.factor_terms(e)))
+    return min(candidates, key=lambda c: c.operations)  # the first when equal
+
+
+def _each(code: CodeEquations, out) -> CodeEquations:
     kinematic = tuple((n, out(e)) for n, e in code.kinematic_equations)
     mass = tuple((key, out(e)) for key, e in code.mass_matrix)
     forcing = tuple(out(e) for e in code.forcing)
     count = cse_operations([*(e for _, e in kinematic), *(e for _, e in mass), *forcing])
-    return CodeEquations(code.route, kinematic, mass, forcing, count) if count < code.operations else code
+    return CodeEquations(code.route, kinematic, mass, forcing, count)
+
+
+def _divided(e: sp.Expr) -> sp.Expr:
+    """A quotient of polynomials n/d as q + r/d, n = q d + r divided in d's symbols: the top's
+    (e·e)²/(e·e)² goes and a gyroscopic (A − C) ω₂ ω₃ stands apart from what divides by e·e."""
+    n, d = sp.fraction(sp.cancel(e))
+    if d.is_number:
+        return sp.factor_terms(n / d)
+    q, r = sp.div(sp.expand(n), sp.expand(d), *sorted(d.free_symbols, key=lambda x: x.name))
+    return sp.factor_terms(q) + sp.factor_terms(r) / sp.factor(d)
+
+
+def _rational(e: sp.Expr) -> bool:
+    """A quotient of polynomials in the state (no sine, no root): Euler parameters written by hand,
+    whose M and F divide by e·e. Divided out (:func:`_divided`), a heavy top's M is A + m l²
+    again (159 → 63 operations, Kane 64). Entries with functions are left to factor_terms: cancel
+    would expand their sines and cosines as generators (a four-bar: 94 → 194)."""
+    if e.is_number or e.atoms(sp.Function) or any(p.exp.is_Rational and not p.exp.is_Integer for p in e.atoms(sp.Pow)):
+        return False
+    return any(p.exp.is_negative and not p.base.is_Atom for p in e.atoms(sp.Pow))
 
 
 def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
