@@ -66,8 +66,13 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     forms, small = program.inlinings
     if not small:
         return _inlined(program, names, *forms[0][0], operations=program_operations(program))
-    return min((factored(_inlined(program, names, *f, operations=count)) for f, count in forms),
-               key=lambda c: c.operations)
+    inlined = [_inlined(program, names, *f, operations=count) for f, count in forms]
+    candidates = [factored(c) for c in inlined]
+    cheapest = min(inlined, key=lambda c: c.operations)
+    exprs = _expressions(cheapest)
+    if trees_within(exprs, FACTORED_TREES) and any(_rational(e) for e in exprs):  # the cheapest form alone
+        candidates.append(_each(cheapest, lambda e: _divided(e) if _rational(e) else sp.factor_terms(e)))
+    return min(candidates, key=lambda c: c.operations)
 
 
 def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int) -> CodeEquations:
@@ -98,10 +103,7 @@ def factored(code: CodeEquations) -> CodeEquations:
     forms are taken as the chapter's route gives them, tidied for print as they are printed."""
     if not trees_within(_expressions(code), FACTORED_TREES):
         return code
-    candidates = [code, _each(code, sp.factor_terms)]
-    if any(_rational(e) for e in _expressions(code)):
-        candidates.append(_each(code, lambda e: _divided(e) if _rational(e) else sp.factor_terms(e)))
-    return min(candidates, key=lambda c: c.operations)  # the first when equal
+    return min((code, _each(code, sp.factor_terms)), key=lambda c: c.operations)  # the first when equal
 
 
 def _each(code: CodeEquations, out) -> CodeEquations:
