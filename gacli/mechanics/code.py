@@ -129,9 +129,12 @@ def _rational(e: sp.Expr) -> bool:
     whose M and F divide by e·e. Divided out (:func:`_divided`), a heavy top's M is A + m l²
     again (159 → 63 operations, Kane 64). Entries with functions are left to factor_terms: cancel
     would expand their sines and cosines as generators (a four-bar: 94 → 194)."""
-    if e.is_number or e.atoms(sp.Function) or any(p.exp.is_Rational and not p.exp.is_Integer for p in e.atoms(sp.Pow)):
+    powers = e.atoms(sp.Pow)
+    # Small integer powers only: cancelling expands them, and (x + y + z)**40 written in a file
+    # would expand past any budget.
+    if e.is_number or e.atoms(sp.Function) or any(not p.exp.is_Integer or abs(p.exp) > 4 for p in powers):
         return False
-    return any(p.exp.is_negative and not p.base.is_Atom for p in e.atoms(sp.Pow))
+    return any(p.exp.is_negative and not p.base.is_Atom for p in powers)
 
 
 def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
