@@ -155,6 +155,8 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
     for qd in dependent:
         rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent), beta0.get(qd, 0)))
     partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
+    if not beta0 and not any(motion.tree.timed(e) for e in motion.tree.edges):
+        motion.tree.speeds = [(p, S.rate(qi)) for p, qi in zip(partial, independent)]
     return solver, Passes(partial, Pass("actual", rates, timed=True), Pass("gamma", {}))
 
 

@@ -37,6 +37,9 @@ class FrameTree:
         self.grad = {e.name: {q: sp.diff(e.angle, s) for q, s in coordinates.items() if e.angle.has(s)} for e in edges}
         self.time = time or {}
         self._timed = {e.name: time_rate(e.angle, self.time) for e in edges}
+        # The partial passes and their speeds, once known, where the actual rates are Σ β u alone
+        # (build.py): a component of ω that is a number for every partial pass is Σ c u.
+        self.speeds: list[tuple[Pass, sp.Expr]] = []
         self.names = {s: q for q, s in coordinates.items()}
         self._rotation: dict = {}
         self._omega: dict = {}
@@ -129,10 +132,24 @@ class FrameTree:
             top = self.edges[top].parent
         return top, e.axis, edges
 
+    def turning_group(self, frame: str) -> tuple[str, int, list[str]]:
+        """:meth:`group`, or the frame's parent alone when that parent's ω is a number for every
+        partial pass (its speeds are its body rates): a rotor turned by ρ from a shell whose ω is
+        u takes the shell's ω turned by ρ, not its Euler angles' ψ + ρ."""
+        top, axis, edges = self.group(frame)
+        parent = self.edges[frame].parent
+        if len(edges) > 1 and self.speeds and all(x.is_Rational for p, _ in self.speeds for x in self.omega(parent, p)):
+            return parent, axis, [frame]
+        return top, axis, edges
+
     def rate(self, edge: str, rates: Pass) -> sp.Expr:
         """θ̇ of one edge for the pass's coordinate rates (and θ_t for a timed pass)."""
         rate = sp.Add(*(k * rates.rate(q) for q, k in self.grad[edge].items()))
         return rate + self.tape.let(self._timed[edge]) if rates.timed and self._timed[edge] != 0 else rate
+
+    def timed(self, edge: str) -> bool:
+        """The edge's angle holds time."""
+        return self._timed[edge] != 0
 
     def held_acceleration(self, edges: list[str], actual: Pass) -> sp.Expr:
         """Σ θ̈ of the edges with every q̈ zero: θ̇'s d/dt with the rates held, Σ ∂²θ/∂q∂q' q̇ q̇'
@@ -150,21 +167,33 @@ class FrameTree:
             return ZV
         key = (frame, rates.key)
         if key not in self._omega:
-            top, axis, edges = self.group(frame)
+            top, axis, edges = self.turning_group(frame)
             w = list(self.express(self.omega(top, rates), top, frame))
             if axis < 0:
                 w = add(w, self.relative(frame, rates))
             else:
                 w[axis] = w[axis] + sp.Add(*(self.rate(e, rates) for e in edges))
-            self._omega[key] = self.tape.vec(w, name=("w", frame, rates.key))
+            self._omega[key] = self.tape.vec(self._simplest(frame, rates, w), name=("w", frame, rates.key))
         return self._omega[key]
+
+    def _simplest(self, frame: str, rates: Pass, w: list) -> list:
+        """ω's components as numbers where a partial pass's are (a frame whose rates are stated as
+        its body rates: ω = u through Euler angles' rates), and the actual ω then Σ c u."""
+        partial = [p for p, _ in self.speeds]
+        if any(rates is p for p in partial):
+            return [self.tape.number(x) if self.tape.number(x) is not None else x for x in w]
+        if rates.key != "actual" or not self.speeds:
+            return w
+        columns = [self.omega(frame, p) for p in partial]
+        return [sp.Add(*(c[i] * u for c, (_, u) in zip(columns, self.speeds)))
+                if all(c[i].is_Rational for c in columns) else x for i, x in enumerate(w)]
 
     def alpha0(self, frame: str, actual: Pass) -> tuple:
         """α of the frame with all accelerations zero: α_F = Rᵀ α_G + (Σ θ̇) ω_F × e."""
         if frame == INERTIAL:
             return ZV
         if frame not in self._alpha:
-            top, axis, edges = self.group(frame)
+            top, axis, edges = self.turning_group(frame)
             a = self.express(self.alpha0(top, actual), top, frame)
             rate = sp.Add(*(self.rate(e, actual) for e in edges))
             if axis < 0:

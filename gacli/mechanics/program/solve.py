@@ -17,7 +17,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.algebra.angles import reduced
 from gacli.algebra.blocks import block_triangular
+from gacli.algebra.graph import is_small
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 
@@ -25,6 +27,7 @@ BLOCK = 6  # the adjugate's minors grow as 2^n: a larger coupled block is refuse
 # Orthogonality is tested pair by pair at generic points: beyond this many rows the test itself
 # would cost more than the closed route, and no system met has such a block.
 ORTHOGONAL_LIMIT = 24
+_SMALL = 200  # tree nodes of a minor's closed form past which it is not reduced
 
 
 def adjugate(tape: Tape, A: list[list]) -> tuple[list[list], sp.Expr]:
@@ -42,14 +45,30 @@ def adjugate(tape: Tape, A: list[list]) -> tuple[list[list], sp.Expr]:
         if key not in minors:
             terms = [(-1) ** j * A[rows[0]][c] * minor(rows[1:], cols[:j] + cols[j + 1:])
                      for j, c in enumerate(cols) if A[rows[0]][c] != 0]
-            minors[key] = tape.let(sp.Add(*terms))
+            minors[key] = _reduced(tape, tape.let(sp.Add(*terms)))
         return minors[key]
 
     every = tuple(range(n))
     cofactor = [[(-1) ** (i + j) * minor(every[:i] + every[i + 1:], every[:j] + every[j + 1:])
                  for j in range(n)] for i in range(n)]
-    det = tape.let(sp.Add(*(A[0][j] * cofactor[0][j] for j in range(n))))
+    det = _reduced(tape, tape.let(sp.Add(*(A[0][j] * cofactor[0][j] for j in range(n)))))
     return [[cofactor[j][i] for j in range(n)] for i in range(n)], tape.let(1 / det)
+
+
+# A minor is reduced in closed form when it reads at most this many assignments (rows stated as
+# forms, a few contact entries); a bicycle's read hundreds and are taken as they are.
+_CLOSED_NAMES = 30
+
+
+def _reduced(tape: Tape, value: sp.Expr) -> sp.Expr:
+    """A minor or determinant with sin² + cos² = 1 applied where that shortens its closed form:
+    Euler angles' rates, stated as quasi-coordinates, have det sin θ (sin² ψ + cos² ψ), which the
+    program would otherwise divide by (gacli.algebra.angles.reduced)."""
+    closed = tape.closed_within(value, _CLOSED_NAMES)
+    if closed is None or not is_small(closed, _SMALL) or not closed.has(sp.sin, sp.cos):
+        return value
+    shorter = reduced(closed)
+    return tape.let(shorter) if sp.count_ops(shorter) < sp.count_ops(closed) else value
 
 
 def plan(A: list[list]) -> tuple[list[tuple[int, int]], list[int], list[int]]:

@@ -17,6 +17,7 @@ taken as zero); the tolerance here is relative to the terms' size.
 from __future__ import annotations
 
 import random
+from fractions import Fraction
 from collections.abc import Iterable
 
 import sympy as sp
@@ -100,6 +101,22 @@ class Tape:
             c = -c if hit is not None else c
         return None if hit is None else c * hit
 
+    def closed_within(self, e: sp.Expr, names: int) -> sp.Expr | None:
+        """:meth:`closed`, or None when ``e`` reads more than ``names`` assignments: the walk is
+        bounded before any tree is formed (a bicycle's row entries read hundreds)."""
+        index = {name: i for i, (name, _, _) in enumerate(self.assignments)}
+        seen: set[sp.Symbol] = set()
+        todo = [s for s in as_expr(e).free_symbols if s in index]
+        while todo:
+            s = todo.pop()
+            if s in seen:
+                continue
+            seen.add(s)
+            if len(seen) > names:
+                return None
+            todo += [x for x in self.assignments[index[s]][1].free_symbols if x in index]
+        return self.closed(e)
+
     def closed(self, e: sp.Expr) -> sp.Expr:
         """``e`` with the assignments it reads written out, down to the state and the parameters
         (for small values only: a tree of every step)."""
@@ -122,6 +139,19 @@ class Tape:
     def values(self, e: sp.Expr) -> list[complex]:
         """``e`` (over state symbols and assigned ones) at each generic point."""
         return [v[0] for v in self._values([as_expr(e)])]
+
+    def number(self, e) -> sp.Rational | None:
+        """The small rational ``e`` equals at every generic point (a frame's partial angular velocity
+        that is a unit vector, read through Euler angles' rates), or None."""
+        e = as_expr(e)
+        if e.is_Rational:
+            return e
+        values = self.values(e)
+        first = values[0]
+        if abs(first.imag) > _TOLERANCE or any(abs(v - first) > _TOLERANCE * max(1.0, abs(first)) for v in values):
+            return None
+        guess = Fraction(first.real).limit_denominator(12)
+        return sp.Rational(guess.numerator, guess.denominator) if abs(float(guess) - first.real) < _TOLERANCE else None
 
     def vanishes(self, e) -> bool:
         """``e`` is zero at every generic point (relative to the size of its terms): taken as identically zero."""
