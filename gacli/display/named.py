@@ -259,6 +259,7 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     exprs = substitute(exprs, by_rate) if by_rate else list(exprs)
     # Each rate's value with the other rates named in it, never itself.
     rate_values = [substitute([dependent[n]], {e: r for e, r in by_rate.items() if r != S.rate(n)})[0] for n in named]
+    named, rate_values = _used(named, rate_values, exprs)
     # The CSE generated code makes (SymPy's where the trees allow): the quantities are its temporaries.
     replacements, reduced = common_subexpressions([*rate_values, *exprs], iter(lambda: namer.fresh(), None))
     rate_values, exprs = reduced[:len(rate_values)], reduced[len(rate_values):]
@@ -274,6 +275,21 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     rates = tuple((q, e) for (q, _), e in zip(kinematic, exprs[:n]) if e != S.rate(q))
     return short_lines(Named(tuple(quantities), rates, tuple(zip((key for key, _ in mass), exprs[n:n + m])),
                              tuple(exprs[n + m:]), "closed"), namer)
+
+
+def _used(named: list[str], values: list[sp.Expr], exprs: list[sp.Expr]) -> tuple[list[str], list[sp.Expr]]:
+    """The dependent rates the printed expressions read, directly or through another kept rate: a
+    rate that stands nowhere in them would print a second formula beside its kinematic equation
+    (a quaternion frame's ė with e·e, above code's ė on the sphere)."""
+    read = free_symbols(exprs)
+    kept: set[str] = set()
+    while True:
+        more = {n for n, v in zip(named, values) if n not in kept and S.rate(n) in read}
+        if not more:
+            break
+        kept |= more
+        read = read | free_symbols([v for n, v in zip(named, values) if n in more])
+    return [n for n in named if n in kept], [v for n, v in zip(named, values) if n in kept]
 
 
 # A value printing longer than this is written through names for its longest pieces, each on
