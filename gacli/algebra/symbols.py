@@ -73,6 +73,11 @@ def time_differentiator(chain: Mapping[sp.Symbol, sp.Expr]) -> Differentiator:
     return Differentiator({T: sp.S.One, **chain})
 
 
+def time_chain(functions: Iterable[str]) -> dict[sp.Symbol, sp.Expr]:
+    """d/dt of what holds time apart from the coordinates: t → 1, each free function → its rate."""
+    return {T: sp.S.One, **function_chain(functions)}
+
+
 def function_chain(names: Iterable[str], orders: int = 4) -> dict[sp.Symbol, sp.Symbol]:
     """d/dt of free functions of time up to ``orders`` derivatives: Omega → dot(Omega) → ddot(Omega) → ..."""
     return {rate(n, o): rate(n, o + 1) for n in names for o in range(orders)}

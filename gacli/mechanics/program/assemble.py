@@ -23,7 +23,7 @@ import sympy as sp
 from gacli.mechanics.program.loads import UnitLoads
 from gacli.mechanics.program.motion import Motion
 from gacli.mechanics.program.units import Unit, Wheel, unit_inertia
-from gacli.mechanics.program.vectors import ZERO, Pass, add, cross, dot, matrix_times, scale, unit
+from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale, unit
 
 
 @dataclass(frozen=True)
@@ -84,17 +84,14 @@ def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
     tape.stage = "rest"
     # Components of the rest that vanish are exact zeros: a body whose speeds are its body rates has
     # α = u̇, read through Euler angles as α₀ + the dependent accelerations' part, which cancel.
-    a_rest = tape.vec(_live(tape, add(motion.acceleration0(u.point, passes.actual, along),
-                                      motion.velocity(u.point, passes.gamma, along))))
+    a_rest = tape.vec(tape.nonzero(x) for x in add(motion.acceleration0(u.point, passes.actual, along),
+                                                   motion.velocity(u.point, passes.gamma, along)))
     omega = alpha = None
     if u.rigid:
         omega = tree.omega(u.frame, passes.actual)
-        alpha = tape.vec(_live(tape, add(tree.alpha0(u.frame, passes.actual), tree.omega(u.frame, passes.gamma))))
+        alpha = tape.vec(tape.nonzero(x) for x in add(tree.alpha0(u.frame, passes.actual),
+                                                      tree.omega(u.frame, passes.gamma)))
     return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes, along)
-
-
-def _live(tape, v) -> tuple:
-    return tuple(ZERO if tape.vanishes(x) else x for x in v)
 
 
 def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Sums) -> None:

@@ -41,7 +41,7 @@ def _setup(system: System, independent: tuple[str, ...] | None,
     once the independent rates are known, and only when no form row holds its coordinates."""
     model = system.frames
     coordinates = {c.name: S.value(c.name) for c in system.coordinates}
-    time = {S.T: ONE, **S.function_chain(f.name for f in system.free_functions)}
+    time = S.time_chain(f.name for f in system.free_functions)
     tree = FrameTree(Tape(), model.edges if model is not None else (), coordinates, time)
     tree.tape.stage = "rows"
     links = {p.name: p for p in model.points} if model is not None else {}
@@ -110,8 +110,9 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
         if turning >= len(turnings):
             return None
         forms = turnings[turning]
-    if rates_held(forms, dependent):
-        raise Unsupported(f"a constraint nonlinear in the rates holds the dependent rate '{rates_held(forms, dependent)[0]}'")
+    held = rates_held(forms, dependent)
+    if held:
+        raise Unsupported(f"a constraint nonlinear in the rates holds the dependent rate '{held[0]}'")
     others = [c for c in contacts if root is None or c is not root[1]]
     kept, columns = _columns(motion, others, forms, reduced)
     if len(kept.directions) + len(forms.forms) != len(dependent):

@@ -180,7 +180,12 @@ def lever(tree: FrameTree, c: Contact, actual: Pass, odot: tuple) -> tuple[tuple
     cs = centre_in_s(tree, c)
     s = spin(tree, c, actual) if c.axis is not None else ZERO
     ddot = add(scale(s, cross(unit(c.axis), cs)), odot) if s != 0 and cs != ZV else odot
-    return add(c.offset, cs, c.o), tree.tape.vec(ddot)
+    return reach_from_point(tree, c), tree.tape.vec(ddot)
+
+
+def reach_from_point(tree: FrameTree, c: Contact) -> tuple:
+    """D = d + c + o, from P to the contact along S."""
+    return add(c.offset, centre_in_s(tree, c), c.o)
 
 
 def row_vectors(tree: FrameTree, c: Contact) -> list[tuple]:

@@ -31,7 +31,6 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.algebra.graph import is_small, postorder, shared_subexpressions
-from gacli.mechanics.program.support import Unsupported
 from gacli.numeric.zero import vanishes
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.vectors import ZERO, Pass
@@ -160,8 +159,7 @@ def closed_time_derivative(system: System):
     """d/dt of a small closed form in the coordinates, t and the free functions, in the rates'
     symbols (dot(q)), and those symbols sorted by name: :func:`time_derivative` without a tape."""
     chain = {S.value(c.name): S.rate(c.name) for c in system.coordinates}
-    chain.update(S.function_chain(f.name for f in system.free_functions))
-    chain[S.T] = sp.S.One
+    chain.update(S.time_chain(f.name for f in system.free_functions))
 
     def derivative(e: sp.Expr) -> sp.Expr:
         return sp.Add(*(sp.diff(e, x) * dx for x, dx in chain.items() if e.has(x)))
@@ -268,8 +266,7 @@ def time_derivative(system: System, actual: Pass, tape: Tape):
     names once.
     """
     chain = {S.value(c.name): actual.rate(c.name) for c in system.coordinates}
-    chain.update(S.function_chain(f.name for f in system.free_functions))
-    chain[S.T] = sp.S.One
+    chain.update(S.time_chain(f.name for f in system.free_functions))
     symbols = sorted(chain, key=lambda s: s.name)
 
     def derivative(e: sp.Expr) -> sp.Expr:

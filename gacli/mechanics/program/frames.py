@@ -181,7 +181,7 @@ class FrameTree:
         its body rates: ω = u through Euler angles' rates), and the actual ω then Σ c u."""
         partial = [p for p, _ in self.speeds]
         if any(rates is p for p in partial):
-            return [self.tape.number(x) if self.tape.number(x) is not None else x for x in w]
+            return [x if (n := self.tape.number(x)) is None else n for x in w]
         if rates.key != "actual" or not self.speeds:
             return w
         columns = [self.omega(frame, p) for p in partial]

@@ -49,7 +49,7 @@ class Gram:
         """Whether the position holds at most GRAM_COORDINATES coordinates, and neither t nor a
         function of time (whose derivatives the rest above leaves out)."""
         held = set().union(*(as_expr(x).free_symbols for x in position))
-        timed = {S.T, *S.function_chain(f.name for f in motion.system.free_functions)}
+        timed = set(S.time_chain(f.name for f in motion.system.free_functions))
         coordinates = {S.value(q) for q in motion.coordinates}
         return not held & timed and len(held & coordinates) <= GRAM_COORDINATES
 

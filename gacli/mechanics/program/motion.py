@@ -35,6 +35,7 @@ class Motion:
         self._velocity: dict = {}
         self._acceleration: dict = {}
         self._odot: dict = {}
+        self._reach: dict = {}
 
     def frame_of(self, point: str | None) -> str:
         """The frame a point's velocity is formed along: its last link's (the root's: its contact's S)."""
@@ -122,7 +123,7 @@ class Motion:
         if c.plane == INERTIAL:
             return v
         w = self.tree.express(self.tree.omega(c.plane, rates), c.plane, c.frame)
-        v_q = add(self.velocity(c.origin, rates, c.frame), cross(w, self._reach(c)))
+        v_q = add(self.velocity(c.origin, rates, c.frame), cross(w, self.reach(c)))
         return self.tape.vec(add(v, scale(-1, v_q)))
 
     def contact_acceleration0(self, c: C.Contact, actual: Pass, zero_root: bool = False) -> tuple:
@@ -141,18 +142,17 @@ class Motion:
         big_d, ddot = C.lever(tree, c, actual, odot)
         rho_dot = add(self.velocity(c.point, actual, c.frame), scale(-1, self.velocity(c.origin, actual, c.frame)),
                       cross(tree.omega(c.frame, actual), big_d), ddot)
-        a_q = add(self.acceleration0(c.origin, actual, c.frame), cross(al, self._reach(c)),
+        a_q = add(self.acceleration0(c.origin, actual, c.frame), cross(al, self.reach(c)),
                   cross(w, self.tape.vec(rho_dot)))
         return self.tape.vec(add(a, scale(-1, a_q)))
 
-    def _reach(self, c: C.Contact) -> tuple:
+    def reach(self, c: C.Contact) -> tuple:
         """ρ, from the plane's origin to the contact, along S."""
-        key = ("reach", c.body.name)
-        if key not in self._velocity:
-            d = C.lever(self.tree, c, Pass("still", {}), ZV)[0]
-            self._velocity[key] = self.tape.vec(add(self.position(c.point, c.frame),
-                                                    scale(-1, self.position(c.origin, c.frame)), d))
-        return self._velocity[key]
+        if c.body.name not in self._reach:
+            self._reach[c.body.name] = self.tape.vec(add(self.position(c.point, c.frame),
+                                                         scale(-1, self.position(c.origin, c.frame)),
+                                                         C.reach_from_point(self.tree, c)))
+        return self._reach[c.body.name]
 
     def position(self, point: str | None, frame: str) -> tuple:
         """The point's position from N's origin, along ``frame``."""

@@ -58,9 +58,10 @@ def finish(tape: Tape, rates: dict[str, sp.Expr], sums, k: int) -> Program:
     M = [[None] * k for _ in range(k)]
     for r in range(k):
         for s in range(r, k):
-            M[r][s] = M[s][r] = _total(tape, sums.M[r][s], ("M", r, s))
+            # Shares that cancel across units, or across Euler parameters' terms (a top's M₁₂), are zero.
+            M[r][s] = M[s][r] = tape.nonzero(sp.Add(*sums.M[r][s]), name=("M", r, s))
     tape.stage = "F"
-    F = [_total(tape, sums.F[r], ("F", r)) for r in range(k)]
+    F = [tape.nonzero(sp.Add(*sums.F[r]), name=("F", r)) for r in range(k)]
     outputs = [*rates.values(), *(x for row in M for x in row), *F]
     assignments = _needed(tape.assignments, outputs)
     stages: dict[str, int] = {}
@@ -69,13 +70,6 @@ def finish(tape: Tape, rates: dict[str, sp.Expr], sums, k: int) -> Program:
     labels = tuple((name, tape.labels[name]) for name, _, _ in assignments if name in tape.labels)
     return Program(tuple((name, e) for name, e, _ in assignments), tuple(rates.items()),
                    tuple(x for row in M for x in row), tuple(F), tuple(stages.items()), labels=labels)
-
-
-def _total(tape: Tape, terms: list, name: tuple) -> sp.Expr:
-    """A sum of M or F, zero where it vanishes at the tape's generic points: shares that cancel
-    across units, or across the terms of Euler parameters (a top's M₁₂, zero for every e)."""
-    total = sp.Add(*terms)
-    return sp.S.Zero if tape.vanishes(total) else tape.let(total, name=name)
 
 
 def _needed(assignments: list, outputs: list) -> list:

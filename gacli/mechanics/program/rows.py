@@ -19,7 +19,7 @@ from gacli.algebra.matrices import rank
 from gacli.frame_model import INERTIAL, PointLink
 from gacli.mechanics.program import contacts as C
 from gacli.mechanics.program.motion import Motion
-from gacli.mechanics.program.vectors import ONE, ZERO, Pass, dot
+from gacli.mechanics.program.vectors import ONE, Pass, dot
 
 
 @dataclass(frozen=True)
@@ -78,15 +78,7 @@ def rows(motion: Motion, contacts: list[C.Contact], reduced: list[str]) -> Rows:
     tape = motion.tape
     tape.stage = "rows"
     directions = [(c, e) for c in contacts for e in C.row_vectors(motion.tree, c)]
-    columns = {}
-    for q in reduced:
-        unit = Pass(f"e_{q}", {q: ONE})
-        velocities = {c.body.name: motion.contact_velocity(c, unit) for c in contacts}
-        column = []
-        for c, e in directions:
-            x = dot(e, velocities[c.body.name])
-            column.append(ZERO if tape.vanishes(x) else tape.let(x))
-        columns[q] = column
+    columns = {q: _column(motion, directions, Pass(f"e_{q}", {q: ONE})) for q in reduced}
     every = Rows(tuple(directions), columns)
     numeric = every.numbers(motion, reduced)
     kept: list[int] = []
@@ -99,10 +91,16 @@ def rows(motion: Motion, contacts: list[C.Contact], reduced: list[str]) -> Rows:
 def time_column(motion: Motion, kept: Rows) -> list[sp.Expr]:
     """a₀ of the kept rows: v_C − v_Q with every rate zero and ṫ = 1 (a plane moved or turned with
     time), vanishing entries zero."""
-    tape, still = motion.tape, Pass("time", {}, timed=True)
-    velocities = {c.body.name: motion.contact_velocity(c, still) for c, _ in kept.directions}
-    column = [dot(e, velocities[c.body.name]) for c, e in kept.directions]
-    return [ZERO if tape.vanishes(x) else tape.let(x) for x in column]
+    return _column(motion, kept.directions, Pass("time", {}, timed=True))
+
+
+def _column(motion: Motion, directions, rates: Pass) -> list[sp.Expr]:
+    """Each row's v_C − v_Q along its direction for the pass, vanishing entries zero."""
+    velocities = {}
+    for c, _ in directions:
+        if c.body.name not in velocities:
+            velocities[c.body.name] = motion.contact_velocity(c, rates)
+    return [motion.tape.nonzero(dot(e, velocities[c.body.name])) for c, e in directions]
 
 
 def earliest_independent(numeric: np.ndarray, names: list[str]) -> tuple[str, ...]:

@@ -18,7 +18,7 @@ import dataclasses
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.frame_model import INERTIAL, FrameModel, FrameVector
+from gacli.frame_model import FrameModel, FrameVector
 from gacli.model import System
 
 

@@ -22,6 +22,8 @@ from collections.abc import Iterable
 
 import sympy as sp
 
+ZERO = sp.S.Zero
+
 from gacli.algebra.coerce import as_expr
 from gacli.numeric import Program as Evaluator
 from gacli.numeric.samples import SAMPLE_INTERVAL
@@ -152,6 +154,11 @@ class Tape:
             return None
         guess = Fraction(first.real).limit_denominator(12)
         return sp.Rational(guess.numerator, guess.denominator) if abs(float(guess) - first.real) < _TOLERANCE else None
+
+    def nonzero(self, e, name: tuple | None = None) -> sp.Expr:
+        """``e`` on the tape (:meth:`let`), or an exact zero where it vanishes at the generic points:
+        so the sums and solves after it see the zero (a row entry, a moment, a rest that cancels)."""
+        return ZERO if self.vanishes(e) else self.let(e, name=name)
 
     def vanishes(self, e) -> bool:
         """``e`` is zero at every generic point (relative to the size of its terms): taken as identically zero."""
