@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from gacli.frame_model import INERTIAL
 from gacli.mechanics.program.loads import UnitLoads
 from gacli.mechanics.program.motion import Motion
 from gacli.mechanics.program.units import Unit, Wheel, unit_inertia
@@ -59,6 +60,7 @@ class UnitMotion:
     alpha_rest: tuple
     homes: tuple  # per speed, the point whose velocity V is, turned (Motion.home)
     frame: str  # the frame V and a_rest are along (translation_frame)
+    turning: str = ""  # the frame Ω, ω and α_rest are along (rotation_frame)
 
 
 def _sigma(motion: Motion, wheel: Wheel, rates: Pass) -> sp.Expr:
@@ -72,26 +74,46 @@ def translation_frame(motion: Motion, u: Unit) -> str:
     return motion.frame_of(u.point) if u.point is not None else u.frame
 
 
-def unit_motion(motion: Motion, u: Unit, passes: Passes) -> UnitMotion:
+def rotation_frame(motion: Motion, u: Unit, inertia, passes: Passes) -> str:
+    """The frame a unit's Ω, ω and α are formed along: its own, or for an isotropic inertia (where
+    Ω_r·I Ω_s and Ω_r·I α read alike along any axes) the frame of its chain, up through rotations
+    about frame axes, where its partial ω have the fewest components that are not numbers: a ball
+    turned by Euler angles' rates, along the frame between its second and third rotation, has
+    ω = (θ̇, φ̇ sin θ, φ̇ cos θ + ψ̇); with body rates as speeds its own frame, where ω = u."""
+    tree = motion.tree
+    if inertia is None or u.wheels or not _isotropic(inertia):
+        return u.frame
+    candidates, f = [u.frame], u.frame
+    while f != INERTIAL and tree.edges[f].quaternion is None:
+        f = tree.edges[f].parent
+        candidates.append(f)
+
+    def plain(top: str) -> int:
+        return sum(1 for p in passes.partial for x in tree.omega_along(u.frame, top, p)
+                   if x != 0 and tree.tape.number(x) is None)
+
+    return min(candidates, key=plain)  # the lowest of equals
+
+
+def unit_motion(motion: Motion, u: Unit, passes: Passes, inertia=None) -> UnitMotion:
     tape, tree = motion.tape, motion.tree
     tape.stage = "partials"
     homes = tuple(motion.home(u.point, p) for p in passes.partial)
     # From each home along the point's own frame: one merged turn, not a turn per link of the chain.
     along = translation_frame(motion, u)
     V = [motion.velocity(h, p, along) for h, p in zip(homes, passes.partial)]
-    W = [tree.omega(u.frame, p) for p in passes.partial] if u.rigid else []
+    turning = rotation_frame(motion, u, inertia, passes) if u.rigid else u.frame
+    W = [tree.omega_along(u.frame, turning, p) for p in passes.partial] if u.rigid else []
     sigma = [[_sigma(motion, w, p) for p in passes.partial] for w in u.wheels]
     tape.stage = "rest"
-    # Components of the rest that vanish are exact zeros: a body whose speeds are its body rates has
-    # α = u̇, read through Euler angles as α₀ + the dependent accelerations' part, which cancel.
-    a_rest = tape.vec(tape.nonzero(x) for x in add(motion.acceleration0(u.point, passes.actual, along),
-                                                   motion.velocity(u.point, passes.gamma, along)))
+    # Components of the rest that vanish are exact zeros (a wheel's, a moment that cancels).
+    a_rest = tape.vec(tape.nonzero(x) for x in motion.acceleration0(u.point, passes.actual, along,
+                                                                     gamma=passes.gamma))
     omega = alpha = None
     if u.rigid:
-        omega = tree.omega(u.frame, passes.actual)
-        alpha = tape.vec(tape.nonzero(x) for x in add(tree.alpha0(u.frame, passes.actual),
-                                                      tree.omega(u.frame, passes.gamma)))
-    return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes, along)
+        omega = tree.omega_along(u.frame, turning, passes.actual)
+        alpha = tape.vec(tape.nonzero(x) for x in tree.alpha_along(u.frame, turning, passes.actual, passes.gamma))
+    return UnitMotion(V, W, sigma, omega, a_rest, alpha, homes, along, turning)
 
 
 def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Sums) -> None:
@@ -100,7 +122,7 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     tape.stage = "body setup"
     inertia = unit_inertia(motion.tree, u) if u.rigid else None
     lam = [tape.let(w.inertia) for w in u.wheels]
-    m = unit_motion(motion, u, passes)
+    m = unit_motion(motion, u, passes, inertia)
     tape.stage = "M"
     mass = tape.let(u.mass)
     k = len(passes.partial)
@@ -148,15 +170,17 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
                       passes: Passes, sums: Sums) -> None:
     """Ω_r·(τ − I α − ω × Iω − Σ λ(σ̇ e_a + σ ω × e_a)) + Σ σ_r (τ_a − λ (α_a + σ̇))."""
     tape, k = motion.tape, len(m.V)
-    Iw = tape.vec(matrix_times(inertia, m.omega))
-    h = add(matrix_times(inertia, m.alpha_rest), cross(m.omega, Iw))
+    h = matrix_times(inertia, m.alpha_rest)
+    if not _isotropic(inertia):  # a sphere's I ω is along ω: ω × I ω is zero, not a sum that cancels
+        h = add(h, cross(m.omega, tape.vec(matrix_times(inertia, m.omega))))
     rates = []
     for j, wheel in enumerate(u.wheels):
         now, rest = (tape.let(_sigma(motion, wheel, p)) for p in (passes.actual, passes.gamma))
         rates.append(rest)
         h = add(h, scale(lam[j], add(scale(rest, unit(wheel.axis)), scale(now, cross(m.omega, unit(wheel.axis))))))
-    torque = add(scale(-1, h), *(t for _, t in loads.torques), _moment(motion, loads.moment))
-    torque = tape.vec(torque)
+    applied = add(*(t for _, t in loads.torques), _moment(motion, loads.moment))
+    applied = motion.tree.express(tape.vec(applied), u.frame, m.turning)
+    torque = tape.vec(add(scale(-1, h), applied))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.W[r], torque)))
     for j, wheel in enumerate(u.wheels):
@@ -165,6 +189,11 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
         for r in range(k):
             if m.sigma[j][r] != 0:
                 sums.F[r].append(m.sigma[j][r] * spin)
+
+
+def _isotropic(inertia) -> bool:
+    """I = λ 1 (a uniform sphere or shell, a cube)."""
+    return all(inertia[i][j] == (inertia[0][0] if i == j else 0) for i in range(3) for j in range(3))
 
 
 def _moment(motion: Motion, moment: tuple) -> tuple:

@@ -36,9 +36,10 @@ from gacli.model import System
 
 
 def _setup(system: System, independent: tuple[str, ...] | None,
-           forms: FormRows) -> tuple[Motion, list, tuple | None]:
+           forms: FormRows, above: bool = False) -> tuple[Motion, list, tuple | None]:
     """The tape, frames, contacts and points (none for a file without frames); the free root only
-    once the independent rates are known, and only when no form row holds its coordinates."""
+    once the independent rates are known, and only when no form row holds its coordinates;
+    ``above``: spheres along their planes' frames (contacts.contact)."""
     model = system.frames
     coordinates = {c.name: S.value(c.name) for c in system.coordinates}
     time = S.time_chain(f.name for f in system.free_functions)
@@ -48,7 +49,8 @@ def _setup(system: System, independent: tuple[str, ...] | None,
     bodies = {b.name: b for b in model.bodies} if model is not None else {}
     rolling = model.rolling if model is not None else ()
     origins = dict(model.origins) if model is not None else {}
-    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values()), origins) for r in rolling]
+    contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values()), origins, above)
+                for r in rolling]
     root = R.free_root(links, contacts, coordinates, independent) if independent is not None else None
     if root is not None and set(R.root_coordinates(links, root[0], coordinates)) & forms.names:
         root = None
@@ -91,16 +93,34 @@ def program_of(system: System) -> Program:
         if built[0] is None:
             break
         programs += built
+    if _spheres_above(system):
+        programs.append(_program(system, independent, None, False, above=True))
     return programs[0] if len(programs) == 1 else min(programs, key=cost)
 
 
-def _program(system: System, independent: tuple[str, ...], turning: int | None, gram: bool) -> Program | None:
+def _spheres_above(system: System) -> bool:
+    """A sphere rolls on a plane whose frame its own frame hangs from: the program is also built
+    with that sphere's contact along the plane (contacts.contact), and the cheaper kept. Angles'
+    rates as speeds: a spherical robot's ω along N is short; body rates: along the sphere's own
+    frame it is u."""
+    model = system.frames
+    if model is None:
+        return False
+    bodies = {b.name: b for b in model.bodies}
+    for r in model.rolling:
+        if r.axle is None and r.semi_axes is None and bodies[r.body].frame != (r.on or INERTIAL):
+            return True
+    return False
+
+
+def _program(system: System, independent: tuple[str, ...], turning: int | None, gram: bool,
+             above: bool = False) -> Program | None:
     """The program with the stated rows as stated (``turning`` None) or turned (the turning-th of
     forms.FormRows.turnings), a file without frames' points through their dot products or not
     (``gram``, gacli.mechanics.program.gram); None when there is no such turning."""
     names = list(system.rate_names)
     forms = form_rows(system)
-    motion, contacts, root = _setup(system, independent, forms)
+    motion, contacts, root = _setup(system, independent, forms, above)
     at_root = R.root_coordinates(motion.links, motion.root, motion.coordinates)
     _check_root_alone(motion, at_root)
     reduced = [q for q in names if q not in at_root]

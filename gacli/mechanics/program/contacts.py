@@ -39,7 +39,7 @@ class Contact:
     radius: sp.Expr
     frame: str
     axis: int | None  # the axle's axis of S; None for a sphere
-    spin_edges: tuple[str, ...]  # the edges between the body's frame and S (all about the axle)
+    spin_edges: tuple[str, ...]  # the edges between the body's frame and S (a wheel's: all about the axle)
     point: str | None  # P
     offset: tuple  # d, along S
     centre: tuple  # c along the body's axes
@@ -53,20 +53,27 @@ class Contact:
 
 
 def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingContact,
-            coordinates: set, origins: dict[str, str]) -> Contact:
+            coordinates: set, origins: dict[str, str], above: bool = False) -> Contact:
     """The contact of ``rolling``, its geometry written on the tree's tape; ``origins``: the point at
-    a frame's origin, for the frames given one (a frame without one shares its parent's)."""
+    a frame's origin, for the frames given one (a frame without one shares its parent's).
+
+    ``above``: a sphere's S is the nearest frame above both its own and the plane's (the plane's
+    own frame when it is an ancestor), reached from the sphere through rotations about frame
+    axes: its rows are then along that frame, where a centre at (x, y, r) moves along the
+    coordinates' own axes, and its ω is summed there from the angles' rates (FrameTree.over)."""
     frame, spins, axis = body.frame, [], None
+    plane = rolling.on or INERTIAL
     if rolling.axle is not None:
         axis = next(i for i, c in enumerate(rolling.axle) if c != 0)
         while frame != INERTIAL and tree.edges[frame].axis == axis:
             spins.append(frame)
             frame = tree.edges[frame].parent
+    elif above and rolling.semi_axes is None and (edges := tree.above(frame, tree.common(frame, plane))):
+        spins, frame = edges, tree.common(frame, plane)
     link = links[body.point]
     fixed = not any(c.free_symbols & coordinates for c in link.components)
     point, offset = (link.parent, link.components) if link.frame == frame and fixed else (body.point, ZV)
     centre = rolling.centre.terms[0][1] if rolling.centre.terms else ZV
-    plane = rolling.on or INERTIAL
     n = normal(tree, frame, plane)
     if rolling.semi_axes is not None:
         o, perp, inverse = _ellipsoid_below(tree, n, rolling.semi_axes)
@@ -117,6 +124,13 @@ def spin(tree: FrameTree, c: Contact, rates: Pass) -> sp.Expr:
     return sp.Add(*(tree.rate(e, rates) for e in c.spin_edges))
 
 
+def turning(tree: FrameTree, c: Contact, rates: Pass) -> tuple:
+    """ω of the body relative to S, along S: a wheel's spin s a, a sphere's ω when S is its plane's frame."""
+    if c.axis is not None:
+        return scale(spin(tree, c, rates), unit(c.axis))
+    return tree.over(c.body.frame, c.frame, rates) if c.spin_edges else ZV
+
+
 def centre_in_s(tree: FrameTree, c: Contact) -> tuple:
     """The centre's offset c along S (it turns with the spin)."""
     if c.centre == ZV:
@@ -154,32 +168,39 @@ def _wheel_o_rate(tree: FrameTree, c: Contact, n: tuple, w: tuple) -> tuple:
 
 
 def velocity(tree: FrameTree, c: Contact, v_point: tuple, rates: Pass) -> tuple:
-    """v_C along S for the pass: v_P + ω_S × (d + c + o) + s a × (c + o)."""
+    """v_C along S for the pass: v_P + ω_S × (d + c + o) + ω_r × (c + o), ω_r = :func:`turning`."""
     cs = centre_in_s(tree, c)
     out = add(v_point, cross(tree.omega(c.frame, rates), add(c.offset, cs, c.o)))
-    s = spin(tree, c, rates) if c.axis is not None else ZERO
-    return add(out, scale(s, cross(unit(c.axis), add(cs, c.o)))) if s != 0 else out
+    if c.axis is not None:
+        s = spin(tree, c, rates)
+        return add(out, scale(s, cross(unit(c.axis), add(cs, c.o)))) if s != 0 else out
+    return add(out, cross(turning(tree, c, rates), add(cs, c.o))) if c.spin_edges else out
 
 
-def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot: tuple) -> tuple:
+def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot: tuple,
+                 gamma: Pass | None = None) -> tuple:
     """d/dt of v_C with all accelerations zero (the rows' velocity-product term), along S:
-    a_P + α × D + ω × (Ḋ + ω × D) + s (a × Ḋ + ω × (a × (c + o))), D = d + c + o, Ḋ = s a × c + ȯ."""
+    a_P + α × D + ω × (Ḋ + ω × D) + ω_r × Ḋ + ω × (ω_r × (c + o)) + α_r × (c + o), D = d + c + o,
+    Ḋ = ω_r × c + ȯ, ω_r = s a for a wheel; with ``gamma`` (u̇ = 0), α, α_r and a_P are the rests."""
     cs = centre_in_s(tree, c)
-    w, al = tree.omega(c.frame, actual), tree.alpha0(c.frame, actual)
-    s = spin(tree, c, actual) if c.axis is not None else ZERO
+    w, al = tree.omega(c.frame, actual), tree.alpha0(c.frame, actual, gamma)
     big_d, ddot = lever(tree, c, actual, odot)
-    out = add(a_point, cross(al, big_d), cross(w, tree.tape.vec(add(ddot, cross(w, big_d)))))
-    if s != 0:
-        a = unit(c.axis)
-        out = add(out, scale(s, add(cross(a, ddot), cross(w, cross(a, add(cs, c.o))))))
+    # A sphere's ȯ and ω × o cancel on N's plane (o = −r n, ȯ = −r n × ω): exact zeros, not sums that vanish.
+    turned = tree.tape.vec(tree.tape.nonzero(x) for x in add(ddot, cross(w, big_d)))
+    out = add(a_point, cross(al, big_d), cross(w, turned))
+    rel = turning(tree, c, actual)
+    if any(x != 0 for x in rel):
+        out = add(out, cross(rel, ddot), cross(w, cross(rel, add(cs, c.o))))
+    if c.spin_edges:
+        out = add(out, cross(tree.alpha_over(c.body.frame, c.frame, actual, gamma), add(cs, c.o)))
     return out
 
 
 def lever(tree: FrameTree, c: Contact, actual: Pass, odot: tuple) -> tuple[tuple, tuple]:
-    """D = d + c + o, from P to the contact along S, and the rate of its components, Ḋ = s a × c + ȯ."""
+    """D = d + c + o, from P to the contact along S, and the rate of its components, Ḋ = ω_r × c + ȯ."""
     cs = centre_in_s(tree, c)
-    s = spin(tree, c, actual) if c.axis is not None else ZERO
-    ddot = add(scale(s, cross(unit(c.axis), cs)), odot) if s != 0 and cs != ZV else odot
+    rel = turning(tree, c, actual)
+    ddot = add(cross(rel, cs), odot) if any(x != 0 for x in rel) and cs != ZV else odot
     return reach_from_point(tree, c), tree.tape.vec(ddot)
 
 

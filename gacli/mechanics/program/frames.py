@@ -188,24 +188,102 @@ class FrameTree:
         return [sp.Add(*(c[i] * u for c, (_, u) in zip(columns, self.speeds)))
                 if all(c[i].is_Rational for c in columns) else x for i, x in enumerate(w)]
 
-    def alpha0(self, frame: str, actual: Pass) -> tuple:
-        """α of the frame with all accelerations zero: α_F = Rᵀ α_G + (Σ θ̇) ω_F × e."""
+    def alpha0(self, frame: str, actual: Pass, gamma: Pass | None = None) -> tuple:
+        """α of the frame with all accelerations zero: α_F = Rᵀ α_G + (Σ θ̇) ω_F × e (+ θ̈ held) e.
+
+        With ``gamma`` (the dependent accelerations of u̇ = 0, eq. 14.14), the rest α with u̇ = 0
+        instead: each level adds its θ̇ for γ, and a component of ω that is Σ c u with constant c
+        (:meth:`_simplest`) has no rest at all, since ω's components along F change as α's do. A
+        body whose speeds are its body rates so has α = u̇ with no term to cancel (Routh's sphere
+        read through its Euler angles: α₀ and γ's part, each long, summed to zero)."""
         if frame == INERTIAL:
             return ZV
-        if frame not in self._alpha:
+        key = (frame, gamma is not None)
+        if key not in self._alpha:
             top, axis, edges = self.turning_group(frame)
-            a = self.express(self.alpha0(top, actual), top, frame)
+            a = self.express(self.alpha0(top, actual, gamma), top, frame)
             rate = sp.Add(*(self.rate(e, actual) for e in edges))
             if axis < 0:
                 a = add(a, cross(self.omega(frame, actual), self.relative(frame, actual)))
+                a = a if gamma is None else add(a, self.relative(frame, gamma))
             else:
                 if rate != 0:
                     a = add(a, scale(rate, cross(self.omega(frame, actual), unit(axis))))
                 held = self.held_acceleration(edges, actual)
+                if gamma is not None:
+                    held = held + sp.Add(*(self.rate(e, gamma) for e in edges))
                 if held != 0:
                     a = add(a, scale(held, unit(axis)))
-            self._alpha[frame] = self.tape.vec(a, name=("alpha", frame, actual.key))
-        return self._alpha[frame]
+            if gamma is not None:
+                a = [ZERO if i in self._spoken(frame) else x for i, x in enumerate(a)]
+            self._alpha[key] = self.tape.vec(a, name=("alpha", frame, actual.key if gamma is None else "rest"))
+        return self._alpha[key]
+
+    def _spoken(self, frame: str) -> set[int]:
+        """The components of ω along the frame that are Σ c u with constant c (see :meth:`_simplest`)."""
+        if not self.speeds:
+            return set()
+        columns = [self.omega(frame, p) for p, _ in self.speeds]
+        return {i for i in range(3) if all(c[i].is_Rational for c in columns)}
+
+    def over(self, frame: str, top: str, rates: Pass) -> tuple:
+        """ω of ``frame`` relative to its ancestor ``top``, along top's axes: Σ θ̇ of the edges
+        between, each along its axis turned into top (an Euler-angle body's ω along N is
+        φ̇ z + θ̇ (cos φ, sin φ, 0) + ψ̇ ..., not its body components turned up three times)."""
+        key = ("over", frame, top, rates.key)
+        if key not in self._omega:
+            out, f = ZV, frame
+            while f != top:
+                out = add(out, scale(self.rate(f, rates), self._axis(f, top)))
+                f = self.edges[f].parent
+            self._omega[key] = self.tape.vec(out)
+        return self._omega[key]
+
+    def alpha_over(self, frame: str, top: str, actual: Pass, gamma: Pass | None = None) -> tuple:
+        """The rate of :meth:`over`'s components along top with all accelerations zero (with
+        ``gamma``: with u̇ = 0): each edge's held θ̈ (and θ̇ for γ) along its axis, and its θ̇
+        times the turning of that axis, ω of its parent relative to top × the axis."""
+        out, f = ZV, frame
+        while f != top:
+            parent, axis = self.edges[f].parent, self._axis(f, top)
+            rest = self.held_acceleration([f], actual) + (self.rate(f, gamma) if gamma is not None else ZERO)
+            out = add(out, scale(rest, axis), scale(self.rate(f, actual), cross(self.over(parent, top, actual), axis)))
+            f = parent
+        return self.tape.vec(out)
+
+    def omega_along(self, frame: str, top: str, rates: Pass) -> tuple:
+        """ω of ``frame`` along its ancestor ``top``: ω_top + :meth:`over`."""
+        if frame == top:
+            return self.omega(frame, rates)
+        return self.tape.vec(add(self.omega(top, rates), self.over(frame, top, rates)))
+
+    def alpha_along(self, frame: str, top: str, actual: Pass, gamma: Pass | None = None) -> tuple:
+        """α of ``frame`` along its ancestor ``top`` with all accelerations zero (with ``gamma``:
+        u̇ = 0): α_top + ω_top × ω_rel + the rate of ω_rel along top (:meth:`alpha_over`)."""
+        if frame == top:
+            return self.alpha0(frame, actual, gamma)
+        relative = self.over(frame, top, actual)
+        return self.tape.vec(add(self.alpha0(top, actual, gamma), cross(self.omega(top, actual), relative),
+                                 self.alpha_over(frame, top, actual, gamma)))
+
+    def common(self, a: str, b: str) -> str:
+        """The nearest frame both ``a`` and ``b`` hang from (N at the latest)."""
+        chain = self.chain(b)
+        return next(f for f in self.chain(a) if f in chain)
+
+    def _axis(self, edge: str, top: str) -> tuple:
+        """The axis an edge turns about, along its ancestor ``top``."""
+        e = self.edges[edge]
+        return self.express(unit(e.axis), e.parent, top, key=("axis", edge))
+
+    def above(self, frame: str, top: str) -> list[str] | None:
+        """The edges from ``frame`` up to its ancestor ``top``, each about a frame axis; None when
+        top is not an ancestor or a quaternion edge is between."""
+        chain = self.chain(frame)
+        if top not in chain:
+            return None
+        edges = chain[:chain.index(top)]
+        return None if any(self.edges[e].quaternion is not None for e in edges) else edges
 
     def nz(self, frame: str) -> tuple:
         """N's z axis along the frame's axes (a turn about it changes nothing: from the group's top)."""

@@ -88,30 +88,34 @@ class Motion:
         return moved + time_rate(x, self.tree.time) if rates.timed else moved
 
     def acceleration0(self, point: str | None, actual: Pass, frame: str | None = None,
-                      zero_root: bool = False) -> tuple:
-        """a of the point with all accelerations zero, along ``frame``."""
+                      zero_root: bool = False, gamma: Pass | None = None) -> tuple:
+        """a of the point with all accelerations zero, along ``frame``; with ``gamma``, the rest
+        acceleration with u̇ = 0 (eq. 14.14), formed level by level as α's is (FrameTree.alpha0)."""
         if point is None:
             return ZV
-        key = (point, zero_root)
+        key = (point, zero_root, gamma is not None)
         if key not in self._acceleration:
-            self._acceleration[key] = self._link_acceleration(point, actual, zero_root)
+            self._acceleration[key] = self._link_acceleration(point, actual, zero_root, gamma)
         a, f = self._acceleration[key]
         return a if frame is None else self.tree.express(a, f, frame, key=("a",) + key)
 
-    def _link_acceleration(self, point: str, actual: Pass, zero_root: bool) -> tuple[tuple, str]:
+    def _link_acceleration(self, point: str, actual: Pass, zero_root: bool, gamma: Pass | None) -> tuple[tuple, str]:
         link = self.links[point]
         if point == self.root:
             c = self.root_contact
             if zero_root:
                 return ZV, c.frame
-            return self.tape.vec(scale(-1, self.contact_acceleration0(c, actual, zero_root=True))), c.frame
-        parent = self.acceleration0(link.parent, actual, link.frame, zero_root)
-        w, al = self.tree.omega(link.frame, actual), self.tree.alpha0(link.frame, actual)
+            return self.tape.vec(scale(-1, self.contact_acceleration0(c, actual, True, gamma))), c.frame
+        parent = self.acceleration0(link.parent, actual, link.frame, zero_root, gamma)
+        w, al = self.tree.omega(link.frame, actual), self.tree.alpha0(link.frame, actual, gamma)
         p = link.components
         moving = self.tape.vec(self._moving(link, actual))
         inner = self.tape.vec(add(cross(w, p), scale(2, moving)))
         a = add(parent, cross(al, p), cross(w, inner), self._moving2(link, actual))
-        return self.tape.vec(a, name=None if zero_root else ("a", point, actual.key, link.frame)), link.frame
+        if gamma is not None:
+            a = add(a, self._moving(link, gamma))
+        name = None if zero_root else ("a", point, actual.key if gamma is None else "rest", link.frame)
+        return self.tape.vec(a, name=name), link.frame
 
     def _moving2(self, link: PointLink, actual: Pass) -> tuple:
         """p̈ with all accelerations zero: Σ ∂²p/∂q∂q' q̇ q̇' (and the terms of ∂/∂t, when timed)."""
@@ -126,23 +130,24 @@ class Motion:
         v_q = add(self.velocity(c.origin, rates, c.frame), cross(w, self.reach(c)))
         return self.tape.vec(add(v, scale(-1, v_q)))
 
-    def contact_acceleration0(self, c: C.Contact, actual: Pass, zero_root: bool = False) -> tuple:
-        """Its derivative with all accelerations zero, along S: on a frame's plane, less
-        a_O + α_P × ρ + ω_P × ρ̇, ρ̇ = v_P − v_O + ω_S × D + Ḋ."""
+    def contact_acceleration0(self, c: C.Contact, actual: Pass, zero_root: bool = False,
+                              gamma: Pass | None = None) -> tuple:
+        """Its derivative with all accelerations zero (with ``gamma``: with u̇ = 0), along S: on a
+        frame's plane, less a_O + α_P × ρ + ω_P × ρ̇, ρ̇ = v_P − v_O + ω_S × D + Ḋ."""
         if c.body.name not in self._odot:
             self._odot[c.body.name] = C.o_rate(self.tree, c, actual)
         odot = self._odot[c.body.name]
-        a_point = self.acceleration0(c.point, actual, c.frame, zero_root)
-        a = C.acceleration(self.tree, c, a_point, actual, odot)
+        a_point = self.acceleration0(c.point, actual, c.frame, zero_root, gamma)
+        a = C.acceleration(self.tree, c, a_point, actual, odot, gamma)
         if c.plane == INERTIAL:
             return a
         tree = self.tree
         w = tree.express(tree.omega(c.plane, actual), c.plane, c.frame)
-        al = tree.express(tree.alpha0(c.plane, actual), c.plane, c.frame)
+        al = tree.express(tree.alpha0(c.plane, actual, gamma), c.plane, c.frame)
         big_d, ddot = C.lever(tree, c, actual, odot)
         rho_dot = add(self.velocity(c.point, actual, c.frame), scale(-1, self.velocity(c.origin, actual, c.frame)),
                       cross(tree.omega(c.frame, actual), big_d), ddot)
-        a_q = add(self.acceleration0(c.origin, actual, c.frame), cross(al, self.reach(c)),
+        a_q = add(self.acceleration0(c.origin, actual, c.frame, False, gamma), cross(al, self.reach(c)),
                   cross(w, self.tape.vec(rho_dot)))
         return self.tape.vec(add(a, scale(-1, a_q)))
 
