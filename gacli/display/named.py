@@ -83,6 +83,8 @@ def _pass(key: str) -> tuple[str, str, str]:
         return "", "", ""
     if key == "gamma":
         return "_gamma", "", " for gamma"
+    if key == "rest":
+        return "_rest", "", ", speeds' rates zero"
     if key.startswith("u_"):
         return f"_{key[2:]}", "partial ", f" for dot({key[2:]})"
     if key.startswith("e_"):
@@ -97,8 +99,14 @@ LEGEND = "a frame's angular velocity and acceleration along its own axes, a poin
 # What the words of a description mean, said once in the legend when some description has them.
 WORDS = (("partial", "partial: for one speed, eq. (14.8)"),
          ("accelerations zero", "accelerations zero: the velocity-product part, eq. (14.14)"),
+         ("speeds' rates zero", "speeds' rates zero: the part of eq. (14.14) without the u-dots"),
          ("for gamma", "for gamma: the dependent accelerations' part"),
          ("per unit dot(", "per unit dot(q): for the rolling rows"))
+
+
+def _rest(kind: str, key: str) -> str:
+    """", accelerations zero" after α and a with every q̈ zero; nothing after a rest, which says so itself."""
+    return "" if key == "rest" else _REST.get(kind, "")
 
 
 def legend(abouts) -> str:
@@ -115,12 +123,12 @@ def label_name(label: tuple) -> tuple[str, str, str]:
         _, frame, key, i = label
         suffix, before, after = _pass(key)
         base = identifier(f"{kind[:2]}_{frame}{suffix}")
-        return f"{base}_{AXES[i]}", base, f"{before}{_WHAT[kind]} of {frame}{after}{_REST.get(kind, '')}"
+        return f"{base}_{AXES[i]}", base, f"{before}{_WHAT[kind]} of {frame}{after}{_rest(kind, key)}"
     if kind in ("v", "a"):
         _, point, key, frame, i = label
         suffix, before, after = _pass(key)
         base = identifier(f"{kind}_{point.rstrip('@')}{suffix}")
-        words = f"{before}{_WHAT[kind]} of {point_words(point)}{after}{_REST.get(kind, '')} [{frame}]"
+        words = f"{before}{_WHAT[kind]} of {point_words(point)}{after}{_rest(kind, key)} [{frame}]"
         return f"{base}_{AXES[i]}", base, words
     if kind == "r":
         _, point, frame, i = label

@@ -81,7 +81,7 @@ def rotation_frame(motion: Motion, u: Unit, inertia, passes: Passes) -> str:
     turned by Euler angles' rates, along the frame between its second and third rotation, has
     ω = (θ̇, φ̇ sin θ, φ̇ cos θ + ψ̇); with body rates as speeds its own frame, where ω = u."""
     tree = motion.tree
-    if inertia is None or u.wheels or not _isotropic(inertia):
+    if inertia is None or u.wheels or not isotropic(inertia):
         return u.frame
     candidates, f = [u.frame], u.frame
     while f != INERTIAL and tree.edges[f].quaternion is None:
@@ -171,7 +171,7 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
     """Ω_r·(τ − I α − ω × Iω − Σ λ(σ̇ e_a + σ ω × e_a)) + Σ σ_r (τ_a − λ (α_a + σ̇))."""
     tape, k = motion.tape, len(m.V)
     h = matrix_times(inertia, m.alpha_rest)
-    if not _isotropic(inertia):  # a sphere's I ω is along ω: ω × I ω is zero, not a sum that cancels
+    if not isotropic(inertia):  # a sphere's I ω is along ω: ω × I ω is zero, not a sum that cancels
         h = add(h, cross(m.omega, tape.vec(matrix_times(inertia, m.omega))))
     rates = []
     for j, wheel in enumerate(u.wheels):
@@ -191,7 +191,7 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
                 sums.F[r].append(m.sigma[j][r] * spin)
 
 
-def _isotropic(inertia) -> bool:
+def isotropic(inertia) -> bool:
     """I = λ 1 (a uniform sphere or shell, a cube)."""
     return all(inertia[i][j] == (inertia[0][0] if i == j else 0) for i in range(3) for j in range(3))
 

@@ -23,7 +23,7 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
-from gacli.mechanics.program.assemble import Passes, Sums
+from gacli.mechanics.program.assemble import Passes, Sums, isotropic
 from gacli.mechanics.program.forms import time_derivative
 from gacli.mechanics.program.gram import Gram, add_translation, add_work
 from gacli.mechanics.program.support import Unsupported
@@ -78,7 +78,8 @@ class FormMotion:
         for f in forms:
             change = sp.Add(*(self.D(c) * actual.rate(q) for q, c in f.coefficients), self.D(f.dt))
             alpha.append(sp.Add(*(c * gamma.rate(q) for q, c in f.coefficients), change))
-        return W, omega, tape.vec(alpha)
+        # Components of the rest that vanish are exact zeros (body rates as speeds: α = u̇).
+        return W, omega, tape.vec(tape.nonzero(x) for x in alpha)
 
     def loaded(self, e: sp.Expr) -> sp.Expr:
         """A load's component with the dependent rates replaced by their values (eq. 14.7)."""
@@ -129,8 +130,10 @@ def _add_translation(tape: Tape, mass, V: list, a_rest: tuple, sums: Sums) -> No
 def _add_rotation(tape: Tape, inertia, W: list, omega: tuple, alpha: tuple, sums: Sums) -> None:
     k = len(W)
     H = [tape.vec(matrix_times(inertia, w)) for w in W]
-    Iw = tape.vec(matrix_times(inertia, omega))
-    torque = tape.vec(scale(-1, add(matrix_times(inertia, alpha), cross(omega, Iw))))
+    h = matrix_times(inertia, alpha)
+    if not isotropic(inertia):  # ω × I ω of a sphere is zero, not a sum that cancels
+        h = add(h, cross(omega, tape.vec(matrix_times(inertia, omega))))
+    torque = tape.vec(scale(-1, h))
     for r in range(k):
         for s in range(r, k):
             sums.M[r][s].append(tape.let(dot(W[r], H[s])))
