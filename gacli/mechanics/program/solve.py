@@ -153,7 +153,8 @@ class _Block:
     def of(tape: Tape, A: list[list], rows, cols, orthogonal: bool, length) -> "_Block":
         B = _sub(A, rows, cols)
         if orthogonal:
-            lengths = [tape.let(1 / length(tape.let(sp.Add(*(x * x for x in row))))) for row in B]
+            # A row of a turn's cosines, (−sin θ, cos θ), is of length 1, not sin² θ + cos² θ.
+            lengths = [tape.let(1 / length(_reduced(tape, tape.let(sp.Add(*(x * x for x in row)))))) for row in B]
             return _Block(tuple(rows), tuple(cols), lengths, None)
         return _Block(tuple(rows), tuple(cols), None, adjugate(tape, B))
 

@@ -83,6 +83,8 @@ class Tape:
                 if name is not None:
                     self.labels.setdefault(hit, name)
                 return hit
+        if e.is_Add and self._cancels(e):
+            return ZERO
         label, name = name, sp.Symbol(NAME.format(len(self.assignments)), real=True)
         self.assignments.append((name, e, self.stage))
         self._memo[e] = name
@@ -168,6 +170,18 @@ class Tape:
         terms = list(sp.Add.make_args(e))
         for values in self._values([e, *terms]):
             if abs(values[0]) > _TOLERANCE * max([1.0] + [abs(v) for v in values[1:]]):
+                return False
+        return True
+
+    def _cancels(self, e: sp.Expr) -> bool:
+        """A sum whose terms cancel at every generic point, relative to the largest term alone (a
+        vector turned into a frame and back, e sin φ − (e sin φ − r) − r): the sum is zero. Stricter
+        than :meth:`vanishes`, with no absolute floor, so that a sum of terms that are small in
+        themselves (a tiny parameter of the file) is never taken for zero."""
+        terms = sp.Add.make_args(e)
+        for values in self._values([e, *terms]):
+            largest = max(abs(v) for v in values[1:])
+            if abs(values[0]) > 1e-12 * largest or largest == 0 and values[0] != 0:
                 return False
         return True
 
