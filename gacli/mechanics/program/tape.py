@@ -16,6 +16,7 @@ taken as zero); the tolerance here is relative to the terms' size.
 
 from __future__ import annotations
 
+import cmath
 import random
 from fractions import Fraction
 from collections.abc import Iterable
@@ -180,6 +181,8 @@ class Tape:
         themselves (a tiny parameter of the file) is never taken for zero."""
         terms = sp.Add.make_args(e)
         for values in self._values([e, *terms]):
+            if not all(cmath.isfinite(v) for v in values):  # NaN compares false: never a zero
+                return False
             largest = max(abs(v) for v in values[1:])
             if abs(values[0]) > 1e-12 * largest or largest == 0 and values[0] != 0:
                 return False
