@@ -256,7 +256,7 @@ def _units(system: System, motion: Motion, passes: Passes, substitution: dict, s
     tape = motion.tape
     coordinates = set(motion.coordinates.values())
     tape.stage = "body setup"
-    groups = units(motion.tree, motion.links, system.frames.bodies, coordinates)
+    groups = units(motion.tree, motion.links, system.frames.bodies, coordinates, passes.partial)
     tape.stage = "loads"
     shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads, substitution, coordinates)
     for u, share in zip(groups, shares):

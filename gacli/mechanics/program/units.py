@@ -165,14 +165,15 @@ def wheels_of(body: BodyPlacement, placement: Placement) -> tuple[Wheel, ...]:
 
 
 def units(tree: FrameTree, links: dict[str, PointLink], bodies: tuple[BodyPlacement, ...],
-          coordinates: set) -> list[Unit]:
-    """The bodies grouped greedily, in declaration order, into units (a composite's centre becomes a link)."""
+          coordinates: set, partial: tuple = ()) -> list[Unit]:
+    """The bodies grouped greedily, in declaration order, into units (a composite's centre becomes a
+    link); ``partial``: the partial passes, which choose a lone wheel's frame (:func:`_spun`)."""
     groups: list[dict] = []
     for body in bodies:
         options = placements(tree, body) if body.inertia is not None else None
         if options is None or not any(_join(tree, links, g, body, options, coordinates) for g in groups):
             groups.append({"members": [(body, options)], "frames": set(options or ())})
-    return [_unit(tree, links, g, coordinates) for g in groups]
+    return [_unit(tree, links, g, coordinates, partial) for g in groups]
 
 
 def _join(tree, links, group: dict, body: BodyPlacement, options: dict, coordinates: set) -> bool:
@@ -194,6 +195,24 @@ def _join(tree, links, group: dict, body: BodyPlacement, options: dict, coordina
     return False
 
 
+def _spun(tree: FrameTree, body: BodyPlacement, options: dict, partial: tuple) -> str:
+    """The frame a lone body is assembled in when its centre's link frame is not one it is constant
+    in: of those frames, the one whose partial ω have the fewest components that are not numbers,
+    where the body turns by its spin alone (a wheel hung from a board by its steering truck: the
+    truck's frame; a rotor in a shell whose speeds are its body rates: the shell's, not the
+    frame above it that its spin and the shell's last Euler angle share). An isotropic body is
+    constant in every frame; it stays in its own, and its rotation is formed along the frame
+    where its ω is simplest (gacli.mechanics.program.assemble.rotation_frame)."""
+    I = body.inertia
+    if not partial or all(I[i, j] == (I[0, 0] if i == j else 0) for i in range(3) for j in range(3)):
+        return body.frame
+
+    def plain(frame: str) -> int:
+        return sum(1 for p in partial for x in tree.omega(frame, p) if x != 0 and tree.tape.number(x) is None)
+
+    return min(options, key=lambda f: (plain(f), f != body.frame, f))
+
+
 def _positive(mass: sp.Expr) -> bool:
     return bool(mass.is_Number and mass > 0)
 
@@ -206,14 +225,14 @@ def _offsets(tree, links, members: list[BodyPlacement], frame: str, coordinates:
     return None if any(o is None for o in offsets) else (anchor, offsets)
 
 
-def _unit(tree: FrameTree, links: dict[str, PointLink], group: dict, coordinates: set) -> Unit:
+def _unit(tree: FrameTree, links: dict[str, PointLink], group: dict, coordinates: set, partial: tuple) -> Unit:
     members = group["members"]
     if len(members) == 1:
         body, options = members[0]
         if options is None:  # a particle: assembled along its own link's frame
             return Unit(((body, None),), body.point, links[body.point].frame, body.mass, (), ())
         link = links[body.point].frame
-        frame = link if link in options else body.frame
+        frame = link if link in options else _spun(tree, body, options, partial)
         return Unit(((body, options[frame]),), body.point, frame, body.mass, (), wheels_of(body, options[frame]))
     own = [links[b.point].frame for b, _ in members]
     frame = sorted(group["frames"], key=lambda f: (f not in own, f))[0]
