@@ -170,6 +170,8 @@ class Tape:
             return True
         terms = list(sp.Add.make_args(e))
         for values in self._values([e, *terms]):
+            if not all(cmath.isfinite(v) for v in values):  # NaN compares false: never a zero
+                return False
             if abs(values[0]) > _TOLERANCE * max([1.0] + [abs(v) for v in values[1:]]):
                 return False
         return True
