@@ -127,7 +127,7 @@ def _group(item) -> str:
         for value in params.values():
             if isinstance(value, Path) and value.suffix == ".yaml":
                 return f"file:{value}"
-            if isinstance(value, str) and (SYSTEMS / f"{value}.yaml").is_file():
+            if isinstance(value, str) and value.isidentifier() and (SYSTEMS / f"{value}.yaml").is_file():
                 return f"file:{SYSTEMS / f'{value}.yaml'}"
     return module
 
