@@ -17,6 +17,7 @@ import sympy as sp
 from typer.testing import CliRunner
 
 import gacli
+from conftest import derived_file
 from gacli.cli import app
 from gacli.algebra.graph import cse_operations, shared_subexpressions
 from gacli.errors import DerivationError
@@ -47,7 +48,7 @@ def test_generated_code_is_never_longer_than_the_closed_forms(path):
     # Counted as the benchmark counts both tools: the route taken costs at most the closed forms'
     # operations (a few more where the choice's cheaper count ranks two routes close together),
     # a vehicle's program fewer, and a bicycle's or a trailer's less than half of them.
-    d = derive(load(path))
+    d = derived_file(path)
     code = d.code
     taken = _bench_operations([*(e for _, e in code.kinematic_equations), *(e for _, e in code.mass_matrix),
                                *code.forcing])
@@ -77,7 +78,7 @@ def test_generated_code_is_never_longer_than_the_closed_forms(path):
 ], ids=lambda p: getattr(p, "stem", p))
 def test_the_program_now_costs_no_more_than_the_closed_forms(path, taken):
     # Counted alike, after SymPy's cse (gacli.algebra.graph.cse_operations, the issue's counting).
-    d = derive(load(path))
+    d = derived_file(path)
     code = d.code
     closed = cse_operations([*(e for _, e in d.kinematic_equations), *d.mass_matrix, *d.forcing])
     assert code.route == taken
@@ -88,7 +89,7 @@ def test_the_program_now_costs_no_more_than_the_closed_forms(path, taken):
 def test_the_programs_code_agrees_with_the_closed_forms(path, tmp_path):
     # The vehicles take the program (a trailer's: 353 operations against 1,395): their generated
     # module is checked against the chapter's closed forms, an independent derivation.
-    d = derive(load(path))
+    d = derived_file(path)
     assert d.code.route == "program"
     module = write_python(d, tmp_path)
     for state in list(random_states(d, 7))[:5]:
@@ -153,4 +154,4 @@ def test_the_code_of_every_frame_fixture_compiles_strictly(path, compiler, tmp_p
     # -Wall -Wextra -Werror -pedantic: no dead temporary, whichever route the code takes (a
     # program's sums are inlined unevaluated, and terms that cancel when the CSE rebuilds them
     # once left names nothing used).
-    compile_c(derive(load(path)), tmp_path, compiler)
+    compile_c(derived_file(path), tmp_path, compiler)

@@ -12,11 +12,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
-from typer.testing import CliRunner
 
+from conftest import derived_file, printed
 from gacli.loader import frames
 from gacli.algebra import trig
-from gacli.cli import app
 from gacli.mechanics.equations import derive
 from gacli.loader.loading import load
 
@@ -30,9 +29,9 @@ PRINTED = FILES + sorted(p for p in SYSTEMS.glob("*.yaml") if p.stem not in ("wh
 
 @pytest.mark.parametrize("path", PRINTED, ids=lambda p: p.stem)
 def test_printed_in_under_5000_characters(path):
-    result = CliRunner().invoke(app, ["derive", str(path)])
-    assert result.exit_code == 0, result.output
-    assert len(result.output) < 5_000
+    exit_code, output = printed(path)
+    assert exit_code == 0, output
+    assert len(output) < 5_000
 
 
 def _unreduced(path: Path, monkeypatch):
@@ -45,7 +44,7 @@ def _unreduced(path: Path, monkeypatch):
 
 @pytest.mark.parametrize("path", FILES + [SYSTEMS / "routh_sphere.yaml"], ids=lambda p: p.stem)
 def test_reductions_change_no_value(path, monkeypatch, rng):
-    reduced, plain = derive(load(path)), _unreduced(path, monkeypatch)
+    reduced, plain = derived_file(path), _unreduced(path, monkeypatch)
     assert reduced.independent == plain.independent
     symbols = sorted(set().union(*(e.free_symbols for e in (*plain.mass_matrix, *plain.forcing))), key=str)
     for _ in range(3):
@@ -71,9 +70,9 @@ def _vocabulary(twin: Path) -> Path:
 
 
 def _printed(path: Path) -> str:
-    result = CliRunner().invoke(app, ["derive", str(path)])
-    assert result.exit_code == 0, result.output
-    return result.output
+    exit_code, output = printed(path)
+    assert exit_code == 0, output
+    return output
 
 
 @pytest.mark.parametrize("twin", TWIN_FILES, ids=lambda p: p.stem)
@@ -85,7 +84,7 @@ def test_the_vocabulary_prints_within_one_and_a_half_times_its_format1_twin(twin
 @pytest.mark.parametrize("twin", TWIN_FILES, ids=lambda p: p.stem)
 def test_a_twin_has_the_same_equations(twin, rng):
     # The ratio above means something only if the twin is the same system.
-    a, b = derive(load(_vocabulary(twin))), derive(load(twin))
+    a, b = derived_file(_vocabulary(twin)), derived_file(twin)
     assert a.independent == b.independent
     exprs_a, exprs_b = (*a.mass_matrix, *a.forcing), (*b.mass_matrix, *b.forcing)
     names = sorted({s.name for e in (*exprs_a, *exprs_b) for s in e.free_symbols})
@@ -106,7 +105,7 @@ def test_rows_written_with_angle_sums_print_as_short_as_rows_in_the_heading_fram
     # sums were written out, against 4,045).
     sums, heading = TWINS / "car_angle_sums.yaml", TWINS / "car_format1.yaml"
     assert len(_printed(sums)) <= 1.1 * len(_printed(heading))
-    a, b = derive(load(sums)), derive(load(heading))
+    a, b = derived_file(sums), derived_file(heading)
     names = sorted({s.name for e in (*a.mass_matrix, *a.forcing, *b.mass_matrix, *b.forcing) for s in e.free_symbols})
     values = {n: sp.Float(rng.uniform(0.3, 1.2), 30) for n in names}
     for x, y in zip((*a.mass_matrix, *a.forcing), (*b.mass_matrix, *b.forcing)):

@@ -18,10 +18,10 @@ from pathlib import Path
 
 import pytest
 
+from conftest import printout
 from gacli.cli_help import plain_report
 from gacli.display.long import CHARS_PER_OPERATION, LONGEST_LINE, SMALL_PRINTOUT
 from gacli.display.report import derivation_report
-from gacli.pipeline import PRINTOUT, run
 
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted([*(ROOT / "systems").glob("*.yaml"), *(ROOT / "tests" / "cases").glob("*.yaml"),
@@ -34,7 +34,7 @@ DIGITS = {"num_wide_rationals"}
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_every_system_prints_its_equations_within_the_bound(path):
-    d = run(path, needs=PRINTOUT).derivation  # what `gacli derive FILE` prints
+    d = printout(path).derivation  # what `gacli derive FILE` prints
     text = plain_report(d.system.title or d.system.name, derivation_report(d))
     assert "too large" not in text
     assert "Gibbs-Appell equations, eq. (14.19)" in text

@@ -14,12 +14,9 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-from typer.testing import CliRunner
 
+from conftest import derived_file, printed
 from gacli.algebra import symbols as S
-from gacli.cli import app
-from gacli.loader.loading import load
-from gacli.mechanics.equations import derive
 from gacli.read.expr.build import Scope, build
 from gacli.read.expr.parser import parse
 
@@ -57,12 +54,12 @@ def _close(a: sp.Expr, b: sp.Expr, rng) -> None:
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
 def test_printed_equations_and_rates_are_the_derived_ones(path, rng):
-    d = derive(load(path))
-    result = CliRunner().invoke(app, ["derive", str(path)])
-    assert result.exit_code == 0, result.output
+    d = derived_file(path)
+    exit_code, output = printed(path)
+    assert exit_code == 0, output
     scope = _scope(d)
     equations, rates = {}, {}
-    for line in result.output.splitlines():
+    for line in output.splitlines():
         if m := EQUATION.match(line):
             equations[m["name"]] = _read(m["lhs"], scope) - _read(m["rhs"], scope)
         elif m := RATE.match(line):

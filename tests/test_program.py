@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from conftest import derived_file
 from gacli.algebra import symbols as S
 from gacli.algebra.graph import free_symbols
 from gacli.loader.loading import load, loads
@@ -111,7 +112,7 @@ def test_the_program_agrees_with_the_closed_forms_or_says_why_not(path):
         assert isinstance(reason, str) and reason and "\n" not in reason
         return
     assert unsupported(system) is None
-    derivation = derive(system)
+    derivation = derived_file(path)
     assert [q for q, _ in program.rates] == [c.name for c in system.coordinates]
     # The same speeds, chosen alike when the file names none (gacli.mechanics.equations._same_choice).
     assert program.independent == derivation.independent

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from typer.testing import CliRunner
 
-from conftest import LARGE, SYSTEMS, derived
+from conftest import LARGE, SYSTEMS, derived, printed
 from gacli.cli import app
 from gacli.algebra.readable import displayable, show
 
@@ -64,9 +64,9 @@ TWINS = {"rolling_disk": "rolling_disk_format1"}
 
 
 def _printed(path) -> str:
-    result = CliRunner().invoke(app, ["derive", str(path)])
-    assert result.exit_code == 0, result.output
-    return result.output
+    exit_code, output = printed(path)
+    assert exit_code == 0, output
+    return output
 
 
 @pytest.mark.parametrize("name", [n for n in ALL if n not in LARGE])
