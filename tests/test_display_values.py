@@ -28,6 +28,10 @@ FILES = [ROOT / "systems" / "rolling_disk.yaml", ROOT / "systems" / "routh_spher
          TESTS / "twins" / "car_format1.yaml", TESTS / "twins" / "snakeboard.yaml"]
 EQUATION = re.compile(r"^  dG/d\(ddot\((?P<name>[^)]+)\)\): (?P<lhs>.+) = (?P<rhs>[^=]+)$")
 RATE = re.compile(r"^  dot\((?P<name>[^)]+)\) = (?P<value>.+)$")
+# A printout too long to write out names its common subexpressions first (docs/printing.md).
+NAMED = re.compile(r"^  (?P<name>z\d+|[MF]_\d+(?:_\d+)?) = (?P<value>.+)$")
+# ... and its equations through the entries of M and F it printed: for ddot(q): Σ M_s_r ddot(u_r) = F_s.
+ENTRY_EQUATION = re.compile(r"^  for ddot\((?P<name>[^)]+)\): (?P<lhs>.+) = (?P<rhs>[^=]+)$")
 
 
 def _scope(d) -> Scope:
@@ -60,7 +64,9 @@ def test_printed_equations_and_rates_are_the_derived_ones(path, rng):
     scope = _scope(d)
     equations, rates = {}, {}
     for line in output.splitlines():
-        if m := EQUATION.match(line):
+        if m := NAMED.match(line):
+            scope.values[m["name"]] = _read(m["value"], scope)  # each reads only the ones before it
+        elif m := EQUATION.match(line) or ENTRY_EQUATION.match(line):
             equations[m["name"]] = _read(m["lhs"], scope) - _read(m["rhs"], scope)
         elif m := RATE.match(line):
             rates[m["name"]] = _read(m["value"], scope)

@@ -296,6 +296,15 @@ class _FilePrinter(StrPrinter):
 _PRINTER = _FilePrinter({"order": "lex"})
 
 
+def pythagorean(value: sp.Expr) -> sp.Expr:
+    """A small expression with sin² + cos² = 1 applied where that shortens it: a named quantity
+    may be z cos² ψ + z sin² ψ (a toroidal bicycle's), which a reader should see as z."""
+    if not value.has(sp.sin, sp.cos) or not is_small(value, 200):
+        return value
+    reduced = trig.reduce(value)
+    return reduced if sp.count_ops(reduced) < sp.count_ops(value) else value
+
+
 def show(expr) -> str:
     """An expression in the system file's grammar (``dot(x)``, ``**``, ``abs``)."""
     return _PRINTER.doprint(expr)

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.readable import show
+from gacli.algebra.readable import pythagorean, show
 from gacli.algebra.graph import common_subexpressions, free_symbols, postorder, shared_subexpressions, substitute
 
 AXES = "xyz"
@@ -216,7 +216,7 @@ def from_program(program, taken: set[str]) -> Named:
         else:
             name, about = namer.fresh(), ""
         shown[symbol] = name
-        quantities.append(Quantity(name, value, about))
+        quantities.append(Quantity(name, pythagorean(value), about))
     return short_lines(_state_pieces(_outputs(program, shown, outputs_of, tuple(quantities)), namer), namer)
 
 
@@ -275,7 +275,7 @@ def from_closed(kinematic, mass, forcing, dependent: dict[str, sp.Expr], taken: 
     for s, v in replacements:
         if is_inline(v):
             inline[s] = _through(v, inline)  # 1/z3 with z3 = r**2 in place too: 1/r**2
-    quantities = [Quantity(s, _through(v, inline)) for s, v in replacements if s not in inline]
+    quantities = [Quantity(s, pythagorean(_through(v, inline))) for s, v in replacements if s not in inline]
     quantities += [Quantity(S.rate(n), _through(v, inline), RATES)
                    for n, v in zip(named, rate_values)]
     exprs = [_through(e, inline) for e in exprs]
