@@ -24,7 +24,7 @@ from gacli.frame_model import INERTIAL
 from gacli.mechanics.program.loads import UnitLoads
 from gacli.mechanics.program.motion import Motion
 from gacli.mechanics.program.units import Unit, Wheel, unit_inertia
-from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale, unit
+from gacli.mechanics.program.vectors import Pass, add, cross, dot, isotropic, matrix_times, scale, unit
 
 
 @dataclass(frozen=True)
@@ -88,11 +88,7 @@ def rotation_frame(motion: Motion, u: Unit, inertia, passes: Passes) -> str:
         f = tree.edges[f].parent
         candidates.append(f)
 
-    def plain(top: str) -> int:
-        return sum(1 for p in passes.partial for x in tree.omega_along(u.frame, top, p)
-                   if x != 0 and tree.tape.number(x) is None)
-
-    return min(candidates, key=plain)  # the lowest of equals
+    return min(candidates, key=lambda top: tree.varying(u.frame, passes.partial, top))  # the lowest of equals
 
 
 def unit_motion(motion: Motion, u: Unit, passes: Passes, inertia=None) -> UnitMotion:
@@ -189,11 +185,6 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
         for r in range(k):
             if m.sigma[j][r] != 0:
                 sums.F[r].append(m.sigma[j][r] * spin)
-
-
-def isotropic(inertia) -> bool:
-    """I = λ 1 (a uniform sphere or shell, a cube)."""
-    return all(inertia[i][j] == (inertia[0][0] if i == j else 0) for i in range(3) for j in range(3))
 
 
 def _moment(motion: Motion, moment: tuple) -> tuple:

@@ -184,11 +184,9 @@ def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot
     Ḋ = ω_r × c + ȯ, ω_r = s a for a wheel; with ``gamma`` (u̇ = 0), α, α_r and a_P are the rests."""
     cs = centre_in_s(tree, c)
     w, al = tree.omega(c.frame, actual), tree.alpha0(c.frame, actual, gamma)
-    big_d, ddot = lever(tree, c, actual, odot)
-    # A sphere's ȯ and ω × o cancel on N's plane (o = −r n, ȯ = −r n × ω): exact zeros, not sums that vanish.
-    turned = tree.tape.vec(tree.tape.nonzero(x) for x in add(ddot, cross(w, big_d)))
-    out = add(a_point, cross(al, big_d), cross(w, turned))
     rel = turning(tree, c, actual)
+    big_d, ddot = reach_from_point(tree, c), _lever_rate(tree, c, rel, odot)
+    out = add(a_point, cross(al, big_d), cross(w, tree.tape.vec(add(ddot, cross(w, big_d)))))
     if any(x != 0 for x in rel):
         out = add(out, cross(rel, ddot), cross(w, cross(rel, add(cs, c.o))))
     if c.spin_edges:
@@ -198,10 +196,14 @@ def acceleration(tree: FrameTree, c: Contact, a_point: tuple, actual: Pass, odot
 
 def lever(tree: FrameTree, c: Contact, actual: Pass, odot: tuple) -> tuple[tuple, tuple]:
     """D = d + c + o, from P to the contact along S, and the rate of its components, Ḋ = ω_r × c + ȯ."""
+    return reach_from_point(tree, c), _lever_rate(tree, c, turning(tree, c, actual), odot)
+
+
+def _lever_rate(tree: FrameTree, c: Contact, rel: tuple, odot: tuple) -> tuple:
+    """Ḋ = ω_r × c + ȯ, ω_r the body's turning relative to S (:func:`turning`)."""
     cs = centre_in_s(tree, c)
-    rel = turning(tree, c, actual)
     ddot = add(cross(rel, cs), odot) if any(x != 0 for x in rel) and cs != ZV else odot
-    return reach_from_point(tree, c), tree.tape.vec(ddot)
+    return tree.tape.vec(ddot)
 
 
 def reach_from_point(tree: FrameTree, c: Contact) -> tuple:

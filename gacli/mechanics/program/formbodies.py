@@ -23,12 +23,12 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
-from gacli.mechanics.program.assemble import Passes, Sums, isotropic
+from gacli.mechanics.program.assemble import Passes, Sums
 from gacli.mechanics.program.forms import time_derivative
 from gacli.mechanics.program.gram import Gram, add_translation, add_work
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
-from gacli.mechanics.program.vectors import Pass, add, cross, dot, matrix_times, scale
+from gacli.mechanics.program.vectors import Pass, add, cross, dot, isotropic, matrix_times, scale
 from gacli.model import Form, System
 
 

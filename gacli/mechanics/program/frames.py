@@ -184,9 +184,9 @@ class FrameTree:
             return [x if (n := self.tape.number(x)) is None else n for x in w]
         if rates.key != "actual" or not self.speeds:
             return w
-        columns = [self.omega(frame, p) for p in partial]
+        columns, spoken = [self.omega(frame, p) for p in partial], self._spoken(frame)
         return [sp.Add(*(c[i] * u for c, (_, u) in zip(columns, self.speeds)))
-                if all(c[i].is_Rational for c in columns) else x for i, x in enumerate(w)]
+                if i in spoken else x for i, x in enumerate(w)]
 
     def alpha0(self, frame: str, actual: Pass, gamma: Pass | None = None) -> tuple:
         """α of the frame with all accelerations zero: α_F = Rᵀ α_G + (Σ θ̇) ω_F × e (+ θ̈ held) e.
@@ -225,6 +225,12 @@ class FrameTree:
             return set()
         columns = [self.omega(frame, p) for p, _ in self.speeds]
         return {i for i in range(3) if all(c[i].is_Rational for c in columns)}
+
+    def varying(self, frame: str, partial, top: str | None = None) -> int:
+        """How many components of the frame's partial ω (along ``top``, else its own axes) are not
+        numbers: the frame where a body's rotation is simplest has the fewest."""
+        return sum(1 for p in partial for x in self.omega_along(frame, top or frame, p)
+                   if x != 0 and self.tape.number(x) is None)
 
     def over(self, frame: str, top: str, rates: Pass) -> tuple:
         """ω of ``frame`` relative to its ancestor ``top``, along top's axes: Σ θ̇ of the edges

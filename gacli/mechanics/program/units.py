@@ -21,7 +21,7 @@ from gacli.frame_model import INERTIAL, BodyPlacement, PointLink
 from gacli.loader.frames import simple_rotation
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.support import Unsupported
-from gacli.mechanics.program.vectors import unit
+from gacli.mechanics.program.vectors import isotropic, unit
 
 
 @dataclass(frozen=True)
@@ -203,14 +203,9 @@ def _spun(tree: FrameTree, body: BodyPlacement, options: dict, partial: tuple) -
     frame above it that its spin and the shell's last Euler angle share). An isotropic body is
     constant in every frame; it stays in its own, and its rotation is formed along the frame
     where its ω is simplest (gacli.mechanics.program.assemble.rotation_frame)."""
-    I = body.inertia
-    if not partial or all(I[i, j] == (I[0, 0] if i == j else 0) for i in range(3) for j in range(3)):
+    if not partial or isotropic(body.inertia.tolist()):
         return body.frame
-
-    def plain(frame: str) -> int:
-        return sum(1 for p in partial for x in tree.omega(frame, p) if x != 0 and tree.tape.number(x) is None)
-
-    return min(options, key=lambda f: (plain(f), f != body.frame, f))
+    return min(options, key=lambda f: (tree.varying(f, partial), f != body.frame, f))
 
 
 def _positive(mass: sp.Expr) -> bool:

@@ -60,3 +60,8 @@ def unit(i: int) -> tuple:
 def matrix_times(rows: Sequence[Sequence], v: Sequence) -> tuple:
     """A 3 × 3 matrix (rows) times a vector."""
     return tuple(dot(row, v) for row in rows)
+
+
+def isotropic(inertia: Sequence[Sequence]) -> bool:
+    """I = λ 1 (a uniform sphere or shell, a cube): its rotation terms read alike along any axes."""
+    return all(inertia[i][j] == (inertia[0][0] if i == j else 0) for i in range(3) for j in range(3))
