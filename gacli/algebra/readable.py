@@ -27,6 +27,7 @@ from sympy.printing.str import StrPrinter
 from gacli.algebra import trig
 from gacli.algebra.angles import relative
 from gacli.algebra.symbols import RATE_NAME
+from gacli.algebra.terms import factor_terms
 from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small, postorder
 
 # A quotient is cancelled (which expands numerator and denominator) only up
@@ -76,7 +77,7 @@ class Tidy:
     def _readable(self, expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
         if self.spent + ops > self.budget:
-            return sp.factor_terms(expr)
+            return factor_terms(expr)
         self.spent += ops
         return readable(expr)
 
@@ -147,7 +148,7 @@ def readable(expr: sp.Expr) -> sp.Expr:
         cancelled = trig.reduce(sp.cancel(expr))  # cancel multiplies out, and may rebuild sin² + cos²
         if sp.count_ops(cancelled) < sp.count_ops(expr):
             expr = cancelled
-    plain = sp.factor_terms(expr)
+    plain = factor_terms(expr)
     if not expr.has(sp.sin, sp.cos) or not _expands_small(expr, COLLECT_TERMS // 4):
         return plain
     by_angles = collected(sp.expand(expr))
@@ -169,7 +170,7 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     if not _expands_small(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
         return None
     sums, monomials = [], []
-    for factor in sp.Mul.make_args(sp.factor_terms(denominator)):
+    for factor in sp.Mul.make_args(factor_terms(denominator)):
         base = factor.base if factor.is_Pow else factor
         (sums if base.is_Add else monomials).append(factor)
     if not sums:
@@ -205,9 +206,9 @@ def collected(expanded: sp.Expr, below: sp.Expr = sp.S.One) -> sp.Expr:
     out = []
     for r in sorted(groups, key=sp.default_sort_key):
         inner = groups[r]
-        out.append(sp.factor_terms(sp.Add(*[_factored(sp.Add(*inner[a]) / below) * a
+        out.append(factor_terms(sp.Add(*[_factored(sp.Add(*inner[a]) / below) * a
                                             for a in sorted(inner, key=sp.default_sort_key)])) * r)
-    return sp.factor_terms(sp.Add(*out))
+    return factor_terms(sp.Add(*out))
 
 
 # A coefficient of parameters alone is factored (a polynomial factorization) only
@@ -218,7 +219,7 @@ FACTOR_DEGREE = 6
 
 def _factored(coefficient: sp.Expr) -> sp.Expr:
     """The coefficient's common factors out, or its factorization where that prints shorter."""
-    plain = sp.factor_terms(coefficient)
+    plain = factor_terms(coefficient)
     if len(sp.Add.make_args(sp.expand(plain))) < 3 or not _factorable(coefficient):
         return plain  # two terms factor into something no shorter ((b − w)(b + w))
     factored = _factor(coefficient)

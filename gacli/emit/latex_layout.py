@@ -18,6 +18,7 @@ from typing import NamedTuple
 import sympy as sp
 
 from gacli.algebra.readable import oriented, positive_first
+from gacli.algebra.terms import factor_terms
 from gacli.emit.latex_printer import GacliLatexPrinter, split_rate
 
 # Typeset width of a row (in characters of typeset maths: about 6.5 pt each in 10 pt
@@ -93,7 +94,7 @@ def grouped(expr: sp.Expr) -> list[Part]:
             continue
         coefficient = sp.Add(*coefficients)
         if len(coefficients) > 1:
-            coefficient = sp.factor_terms(coefficient)
+            coefficient = factor_terms(coefficient)
         if coefficient != 0:
             parts.append(Part(coefficient, key[2]))
             kinds.append(key[0])

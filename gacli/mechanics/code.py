@@ -36,6 +36,7 @@ from gacli.algebra import symbols as S
 from gacli.algebra.angles import reduced
 from gacli.algebra.graph import cse_operations, is_small, trees_within
 from gacli.algebra.readable import readable
+from gacli.algebra.terms import factor_terms
 from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
 from gacli.model import System
@@ -69,17 +70,32 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     if not small:
         return _inlined(program, names, *forms[0][0], operations=program_operations(program))
     inlined = [_inlined(program, names, *f, operations=count) for f, count in forms]
-    candidates = [factored(c) for c in inlined]
+    # Each entry rewritten once however often it stands: M's twin entries, and the inlinings'
+    # shared ones (a wheelchair's readable candidate took 5.7 s, most of it on such repeats).
+    terms, tidied, reduced_ = factor_terms, _once(readable), _once(_trigonometric)
+    candidates = [factored(c, terms) for c in inlined]
     cheapest = min(inlined, key=lambda c: c.operations)
     exprs = _expressions(cheapest)
     # Each inlining tidied: the tidier's result does not follow the inlining's count (a ball on a
     # turntable: 204 and 208 operations inlined, 129 and 108 tidied).
     for c in inlined:
         if trees_within(_expressions(c), TIDIED_TREES):
-            candidates += [_each(c, readable), _each(c, _trigonometric)]
+            candidates += [_each(c, tidied), _each(c, reduced_)]
     if trees_within(exprs, FACTORED_TREES) and any(_rational(e) for e in exprs):  # the cheapest form alone
-        candidates.append(_each(cheapest, lambda e: _divided(e) if _rational(e) else sp.factor_terms(e)))
+        candidates.append(_each(cheapest, lambda e: _divided(e) if _rational(e) else terms(e)))
     return min(candidates, key=lambda c: c.operations)
+
+
+def _once(rewrite):
+    """``rewrite`` remembered by its argument, for one choice of code."""
+    seen: dict = {}
+
+    def once(e: sp.Expr) -> sp.Expr:
+        if e not in seen:
+            seen[e] = rewrite(e)
+        return seen[e]
+
+    return once
 
 
 def _inlined(program: Program, names: tuple[str, ...], rates, M, F, operations: int) -> CodeEquations:
@@ -113,14 +129,14 @@ REDUCED_TREE = 300
 FACTORED_TREES = 20_000
 
 
-def factored(code: CodeEquations) -> CodeEquations:
+def factored(code: CodeEquations, terms=factor_terms) -> CodeEquations:
     """A program's ``code``, or the same with the common factors of every sum drawn out (SymPy's
     ``factor_terms``) where that costs fewer operations: a rocker's I β γ and m (l/2)² β γ, apart
     in F, are one m l²/3 β γ so (a four-bar: 107 → 99; a three-link chain: 99 → 92). The closed
     forms are taken as the chapter's route gives them, tidied for print as they are printed."""
     if not trees_within(_expressions(code), FACTORED_TREES):
         return code
-    return min((code, _each(code, sp.factor_terms)), key=lambda c: c.operations)  # the first when equal
+    return min((code, _each(code, terms)), key=lambda c: c.operations)  # the first when equal
 
 
 def _each(code: CodeEquations, out) -> CodeEquations:
@@ -143,9 +159,9 @@ def _divided(e: sp.Expr) -> sp.Expr:
     (e·e)²/(e·e)² goes and a gyroscopic (A − C) ω₂ ω₃ stands apart from what divides by e·e."""
     n, d = sp.fraction(sp.cancel(e))
     if d.is_number:
-        return sp.factor_terms(n / d)
+        return factor_terms(n / d)
     q, r = sp.div(sp.expand(n), sp.expand(d), *sorted(d.free_symbols, key=lambda x: x.name))
-    return sp.factor_terms(q) + sp.factor_terms(r) / sp.factor(d)
+    return factor_terms(q) + factor_terms(r) / sp.factor(d)
 
 
 def _rational(e: sp.Expr) -> bool:
