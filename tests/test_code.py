@@ -75,6 +75,9 @@ def test_generated_code_is_never_longer_than_the_closed_forms(path):
     (TESTS / "frames" / "unbalanced.yaml", "program"),
     # On a tilting plate: the ball's rotation along the frame between its second and third turn.
     (ROOT / "benchmarks" / "corpus" / "ball_and_plate.yaml", "program"),
+    # Written without frames: each wheel's rotation forms read along the axes that do not spin with it.
+    (TESTS / "twins" / "car_format1.yaml", "program"),
+    (TESTS / "twins" / "car_angle_sums.yaml", "program"),
 ], ids=lambda p: getattr(p, "stem", p))
 def test_the_program_now_costs_no_more_than_the_closed_forms(path, taken):
     # Counted alike, after SymPy's cse (gacli.algebra.graph.cse_operations, the counting).

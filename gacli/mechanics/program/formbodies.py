@@ -24,11 +24,12 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Passes, Sums
+from gacli.mechanics.program.despun import Despin, despin
 from gacli.mechanics.program.forms import time_derivative
 from gacli.mechanics.program.gram import Gram, add_translation, add_work
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
-from gacli.mechanics.program.vectors import Pass, add, cross, dot, isotropic, matrix_times, scale
+from gacli.mechanics.program.vectors import ZERO, Pass, add, cross, dot, isotropic, matrix_times, scale
 from gacli.model import Form, System
 
 
@@ -66,8 +67,17 @@ class FormMotion:
     def _along(self, columns: dict, p: Pass) -> tuple:
         return self.tape.vec(add(*(scale(p.rate(q), columns[q]) for q in self.coordinates if p.rate(q) != 0)))
 
-    def rotation(self, forms: tuple[Form, Form, Form]) -> tuple[list[tuple], tuple, tuple]:
-        """(Ω_r for each speed, ω, α_rest) in body axes from the rotation forms."""
+    def rotation(self, forms: tuple[Form, Form, Form], turn: Despin | None = None) -> tuple[list[tuple], tuple, tuple]:
+        """(Ω_r for each speed, ω, α_rest) in body axes from the rotation forms; with ``turn``, along
+        the axes that do not spin with the body (gacli.mechanics.program.despun)."""
+        if turn is not None:
+            W, omega, alpha = self.rotation(turn.forms(forms))
+            # α along D: the rate of D's components plus σ φ̇ e × ω (D turns as the body, less its spin).
+            i, k = turn.transverse
+            spin = turn.sense * self.passes.actual.rate(turn.coordinate)
+            extra = [ZERO] * 3
+            extra[i], extra[k] = -spin * omega[k], spin * omega[i]
+            return W, omega, self.tape.vec(self.tape.nonzero(x) for x in add(alpha, extra))
         tape, actual = self.tape, self.passes.actual
         rows = [{q: tape.let(f.coefficient(q)) for q in self.names if f.coefficient(q) != 0} for f in forms]
         W = [tape.vec(sp.Add(*(c * p.rate(q) for q, c in row.items())) for row in rows)
@@ -98,8 +108,9 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
         else:
             _add_translation(tape, mass, *motion.point(body.position), sums)
         if body.is_rigid:
-            rotations[body.name] = motion.rotation(body.rotation)
-            _add_rotation(tape, body.inertia.tolist(), *rotations[body.name], sums)
+            turn = despin(body.inertia.tolist(), body.rotation, motion.coordinates)
+            rotations[body.name] = (*motion.rotation(body.rotation, turn), turn)
+            _add_rotation(tape, body.inertia.tolist(), *rotations[body.name][:3], sums)
     tape.stage = "F"
     for force in system.forces:
         f = tuple(motion.loaded(c) for c in force.vector)
@@ -112,8 +123,9 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
     for torque in system.torques:
         if torque.body not in rotations:
             raise Unsupported(f"the torque on '{torque.body}' acts on a body without rotation forms")
-        tau = tuple(motion.loaded(c) for c in torque.vector)
-        for r, w in enumerate(rotations[torque.body][0]):
+        W, _, _, turn = rotations[torque.body]
+        tau = tuple(motion.loaded(c) for c in (torque.vector if turn is None else turn.vector(torque.vector)))
+        for r, w in enumerate(W):
             sums.F[r].append(tape.let(dot(w, tau)))
 
 
