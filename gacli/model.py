@@ -37,6 +37,11 @@ class Form:
     def __sub__(self, other: "Form") -> "Form":
         return self._combined(other, -1)
 
+    def xreplace(self, values: dict) -> "Form":
+        """The form with ``values`` put in its coefficients, those that vanish left out."""
+        pairs = ((n, c.xreplace(values)) for n, c in self.coefficients)
+        return Form(tuple((n, c) for n, c in pairs if c != 0), self.dt.xreplace(values))
+
     def _combined(self, other: "Form", sign: int) -> "Form":
         """self ± other, coefficients that cancel left out."""
         names = dict.fromkeys(self.names + other.names)

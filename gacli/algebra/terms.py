@@ -16,6 +16,8 @@ import sympy as sp
 from sympy.core.exprtools import gcd_terms
 from sympy.core.mul import _keep_coeff
 
+from gacli.algebra.coerce import as_expr
+
 # Subtrees remembered at most; past it the memory starts again (a 6-link arm's display holds ~40,000).
 REMEMBERED = 200_000
 
@@ -26,7 +28,7 @@ def factor_terms(expr: sp.Expr) -> sp.Expr:
     """``sympy.factor_terms(expr)`` with its default options (no radicals, numbers not cleared, signs kept)."""
     if len(_SEEN) > REMEMBERED:
         _SEEN.clear()
-    return _do(sp.sympify(expr))
+    return _do(as_expr(expr))
 
 
 def _do(expr):

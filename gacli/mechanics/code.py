@@ -72,8 +72,8 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     inlined = [_inlined(program, names, *f, operations=count) for f, count in forms]
     # Each entry rewritten once however often it stands: M's twin entries, and the inlinings'
     # shared ones (a wheelchair's readable candidate took 5.7 s, most of it on such repeats).
-    terms, tidied, reduced_ = factor_terms, _once(readable), _once(_trigonometric)
-    candidates = [factored(c, terms) for c in inlined]
+    tidied, reduced_ = _once(readable), _once(_trigonometric)
+    candidates = [factored(c) for c in inlined]
     cheapest = min(inlined, key=lambda c: c.operations)
     exprs = _expressions(cheapest)
     # Each inlining tidied: the tidier's result does not follow the inlining's count (a ball on a
@@ -82,7 +82,7 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
         if trees_within(_expressions(c), TIDIED_TREES):
             candidates += [_each(c, tidied), _each(c, reduced_)]
     if trees_within(exprs, FACTORED_TREES) and any(_rational(e) for e in exprs):  # the cheapest form alone
-        candidates.append(_each(cheapest, lambda e: _divided(e) if _rational(e) else terms(e)))
+        candidates.append(_each(cheapest, lambda e: _divided(e) if _rational(e) else factor_terms(e)))
     return min(candidates, key=lambda c: c.operations)
 
 
@@ -129,14 +129,14 @@ REDUCED_TREE = 300
 FACTORED_TREES = 20_000
 
 
-def factored(code: CodeEquations, terms=factor_terms) -> CodeEquations:
+def factored(code: CodeEquations) -> CodeEquations:
     """A program's ``code``, or the same with the common factors of every sum drawn out (SymPy's
     ``factor_terms``) where that costs fewer operations: a rocker's I β γ and m (l/2)² β γ, apart
     in F, are one m l²/3 β γ so (a four-bar: 107 → 99; a three-link chain: 99 → 92). The closed
     forms are taken as the chapter's route gives them, tidied for print as they are printed."""
     if not trees_within(_expressions(code), FACTORED_TREES):
         return code
-    return min((code, _each(code, terms)), key=lambda c: c.operations)  # the first when equal
+    return min((code, _each(code, factor_terms)), key=lambda c: c.operations)  # the first when equal
 
 
 def _each(code: CodeEquations, out) -> CodeEquations:

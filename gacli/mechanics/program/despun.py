@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
 from gacli.model import Form
 
 
@@ -42,14 +43,14 @@ class Despin:
     def forms(self, forms: tuple[Form, Form, Form]) -> tuple[Form, Form, Form]:
         """The rotation forms along D: the transverse ones at φ = 0."""
         at_zero = {S.value(self.coordinate): sp.S.Zero}
-        return tuple(f if n == self.axis else _substituted(f, at_zero) for n, f in enumerate(forms))
+        return tuple(f if n == self.axis else f.xreplace(at_zero) for n, f in enumerate(forms))
 
     def vector(self, v: tuple) -> tuple:
         """A vector given along the body's axes, along D (a torque on the wheel)."""
         i, k = self.transverse
         phi = S.value(self.coordinate)
         if all(_turns(v[i], v[k], phi, self.sense)):
-            return tuple(sp.sympify(x).xreplace({phi: 0}) for x in v)
+            return tuple(as_expr(x).xreplace({phi: 0}) for x in v)
         c, s = sp.cos(phi), self.sense * sp.sin(phi)
         out = list(v)
         out[i], out[k] = c * v[i] + s * v[k], -s * v[i] + c * v[k]
@@ -92,10 +93,5 @@ def _columns(fi: Form, fk: Form) -> list[tuple[sp.Expr, sp.Expr]]:
 
 def _turns(a: sp.Expr, b: sp.Expr, phi: sp.Symbol, sense: int) -> tuple[bool, bool]:
     """Whether (a, b) is a φ-free pair turned by sense·φ about the axis: ∂a/∂φ = −σ b, ∂b/∂φ = σ a."""
-    a, b = sp.sympify(a), sp.sympify(b)
+    a, b = as_expr(a), as_expr(b)
     return (sp.expand(sp.diff(a, phi) + sense * b) == 0, sp.expand(sp.diff(b, phi) - sense * a) == 0)
-
-
-def _substituted(f: Form, values: dict) -> Form:
-    pairs = tuple((n, c.xreplace(values)) for n, c in f.coefficients)
-    return Form(tuple((n, c) for n, c in pairs if c != 0), f.dt.xreplace(values))

@@ -247,7 +247,7 @@ def _solved(form: Form, relation: RateRelation) -> Form:
     the solution's own rate of change adds is Σ_s ∂A_s/∂ṙ_d ṙ_s + ∂a₀/∂ṙ_d, which vanishes since
     g = A ṙ + a₀ for every ṙ. The rows' other rates must be independent (build.py checks)."""
     solution = {S.rate(relation.dependent): relation.solution}
-    return Form(tuple((q, c.xreplace(solution)) for q, c in form.coefficients), form.dt.xreplace(solution))
+    return form.xreplace(solution)
 
 
 def rates_held(forms: FormRows, dependent) -> list[str]:
