@@ -18,7 +18,9 @@ from pathlib import Path
 
 from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.loader.loading import load_in_stages
+from gacli.mechanics.code import PROGRAM_ALONE
 from gacli.mechanics.equations import Derivation, derive, derive_for_code
+from gacli.mechanics.program.record import program_operations
 from gacli.model import System
 from gacli.read.source import MAX_FILE_BYTES, SourceFile, parse_source, read_source
 
@@ -58,12 +60,12 @@ def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None
         loaded: Callable[[System], None] | None = None) -> Run:
     """Read, load and derive ``path`` once.
 
-    ``needs``: for CODE or PRINTOUT, a system whose generated code is its
-    straight-line program alone (:func:`gacli.mechanics.equations.derive_for_code`)
-    is derived by that, and the closed forms are never formed: its printout
-    names the program's quantities (docs/printing.md). CODE does not form the
-    rolling rows either; PRINTOUT does, for the count ℓ of the rows it reports.
-    ``loaded`` sees the System before it is derived (gacli check's notes on the
+    ``needs``: for CODE, a system the program builder takes is derived by the program alone
+    (:func:`gacli.mechanics.equations.derive_for_code`): generated code computes it, and
+    neither the closed forms nor the rolling rows are formed. For PRINTOUT, so is a system
+    whose program has at least PROGRAM_ALONE operations: its printout names the program's
+    quantities (docs/printing.md); the rolling rows are added, for the count ℓ of the rows
+    it reports. ``loaded`` sees the System before it is derived (gacli check's notes on the
     declarations, kept if the derivation fails).
     """
     step = progress or (lambda name: None)
@@ -83,6 +85,7 @@ def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[s
     system = complete()
     if loaded is not None:
         loaded(system)
-    if needs == PRINTOUT and (program := derive_for_code(system)) is not None:
+    if needs == PRINTOUT and (program := derive_for_code(system)) is not None \
+            and program_operations(program.program) >= PROGRAM_ALONE:
         return Run(source, system, program)
     return Run(source, system, derive(system, progress=step))

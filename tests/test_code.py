@@ -123,11 +123,20 @@ def test_the_bicycle_is_derived_for_code_without_its_closed_forms():
         derive(system)
 
 
-def test_a_small_system_is_not_derived_for_code_alone():
-    # A rolling disk's program (92 operations) is longer than its closed forms: the command line
-    # derives them as before.
-    system = load_source(read_source(ROOT / "systems" / "rolling_disk.yaml"), rolling_rows=False)
-    assert derive_for_code(system) is None
+@pytest.mark.parametrize("path", [ROOT / "systems" / "rolling_disk.yaml", ROOT / "systems" / "cylinder_in_cylinder.yaml"],
+                         ids=lambda p: p.stem)
+def test_a_small_system_is_derived_for_code_by_its_program_alone(path, tmp_path):
+    # One engine for code (issue 28): a rolling disk's program ties with its closed forms (41
+    # operations), and generated code takes the program without forming them, on the command
+    # line as through the API, which derives the closed forms and still writes the program's code.
+    system = load_source(read_source(path), rolling_rows=False)
+    d = derive_for_code(system)
+    assert d is not None and not d.closed and d.code.route == "program"
+    out = tmp_path / "out.py"
+    result = CliRunner().invoke(app, ["derive", str(path), "--format", "python", "--output", str(out)])
+    assert result.exit_code == 0, result.output
+    (text,) = gacli.emit(derive(load(path)), "python").values()
+    assert out.read_text(encoding="utf-8") == text
 
 
 def test_loading_without_rolling_rows_still_reads_every_declaration(tmp_path):
@@ -141,10 +150,17 @@ def test_loading_without_rolling_rows_still_reads_every_declaration(tmp_path):
     assert "Traceback" not in result.output
 
 
-def test_a_format1_file_has_no_program():
+def test_a_format1_file_computes_its_program():
+    # A file without frames has a program too (its bodies' positions and rotation forms), and
+    # generated code computes it: M and F as the chapter's closed forms give them.
     system = loads("gacli: 1\nname: fall\nparameters: [m, g]\ncoordinates: [z]\n"
                    "bodies: {ball: {mass: m, position: [0, 0, z]}}\npotential: m*g*z\n")
-    assert system.frames is None and derive(system).code.route == "closed"
+    d = derive(system)
+    m, g = (next(s for s in d.mass_matrix.free_symbols | d.forcing.free_symbols if s.name == n) for n in "mg")
+    assert system.frames is None and d.code.route == "program"
+    at = {m: sp.Rational(3, 2), g: sp.Rational(49, 5)}  # the program's graphs are built unevaluated
+    assert (d.code.dense_mass_matrix()[0, 0] - m).subs(at) == 0 and (d.code.forcing[0] + g * m).subs(at) == 0
+    assert d.mass_matrix == sp.Matrix([[m]]) and d.forcing == sp.Matrix([[-g * m]])  # the closed forms
 
 
 PROGRAM_ROUTE = [p for p in sorted([*(TESTS / "frames").glob("*.yaml"), *(TESTS / "twins").glob("*.yaml")])

@@ -150,7 +150,9 @@ def test_index_macros_are_upper_case_and_unique():
 
 def test_layout_rejects_a_symbol_with_no_slot():
     d = derived("cylinder_in_cylinder")
-    stray = dataclasses.replace(d, forcing=sp.ImmutableMatrix([d.forcing[0] + S.value("zeta")]))
+    # What generated code computes is Derivation.code (the program's F), where the stray symbol goes.
+    stray = dataclasses.replace(d)
+    stray.__dict__["code"] = dataclasses.replace(d.code, forcing=(d.code.forcing[0] + S.value("zeta"),))
     with pytest.raises(EmitError, match="not in x, p or r: zeta"):
         emit_python(stray)
 

@@ -1,27 +1,24 @@
-"""q̇, M and F as generated code computes them: the closed forms, or the straight-line program.
+"""q̇, M and F as generated code computes them: the straight-line program, wherever it takes the system.
 
-The chapter's route (:mod:`gacli.mechanics.equations`) gives M and F in
-closed form, which text and LaTeX print and the code emitters can share
-subexpressions of. For a system written with frames there is a second
-route, :mod:`gacli.mechanics.program`: the same q̇, M and F as a
-straight-line program over the frame tree, with the dependent rates and
-accelerations solved as numbers. Which one generated code uses is decided
-here, once, by the operations each costs after common subexpressions are
-shared, so that the command line and ``gacli.emit(gacli.derive(...))``
-always write the same code:
+Generated code computes the equations of :mod:`gacli.mechanics.program`: the
+same q̇, M and F as the chapter's closed forms (eq. 14.19), as a
+straight-line program over the frame tree, or over the bodies' positions and
+rotation forms of a file without frames, with the dependent rates and
+accelerations solved as numbers (issue #28: one engine). The closed forms
+(:mod:`gacli.mechanics.equations`) are what text and LaTeX print; they reach
+generated code only where the builder does not take a system, or chooses
+other independent speeds than the chapter's route (a rolling contact's rows
+with the speeds left to gacli), so that the command line and
+``gacli.emit(gacli.derive(...))`` always write the same code.
 
-- a program of at least :data:`PROGRAM_ALONE` operations is taken without
-  forming the closed forms at all (a bicycle's are millions of nodes as
-  trees, 4,279 operations after sharing, against the program's 1,322);
-- otherwise the one of fewer operations (a rolling disk's closed forms: 41
-  against 49; a robot towing a trailer's program: 300 against 624).
-
-Operations are counted after the code emitters' own CSE
-(:func:`gacli.algebra.graph.cse_operations`: SymPy's ``cse`` where no tree
-is large), so that the count is what generated code computes. A program's
-expressions are graphs sharing their subexpressions, built unevaluated
-(:func:`gacli.mechanics.program.inline`), or in SymPy's canonical form when
-their trees are small and that costs fewer operations; they must be walked
+The program is taken in the cheapest of a few forms (:func:`from_program`):
+its inlinings as shared graphs or in SymPy's canonical form, each as given,
+tidied by the display's simplifier, reduced by sin² + cos² = 1, or with the
+common factors of its sums drawn out; counted by operations after the code
+emitters' own CSE (:func:`gacli.algebra.graph.cse_operations`: SymPy's
+``cse`` where no tree is large), which is what generated code computes. A
+program's expressions are graphs sharing their subexpressions, built
+unevaluated (:func:`gacli.mechanics.program.inline`); they must be walked
 with :mod:`gacli.algebra.graph`, never as trees.
 """
 
@@ -41,9 +38,9 @@ from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
 from gacli.model import System
 
-# Operations of a program past which the closed forms are not formed for code: no
-# system of the repository whose program is this large has shorter closed forms, and
-# forming them is what costs a bicycle's derivation its time.
+# Operations of a program from which a printout names the program's quantities without forming
+# the closed forms at all (gacli.pipeline, PRINTOUT): no system of the repository whose program
+# is this large prints written out, and forming its closed forms is what costs a bicycle its time.
 PROGRAM_ALONE = 800
 
 
@@ -178,13 +175,9 @@ def _rational(e: sp.Expr) -> bool:
 
 
 def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
-    """The route generated code takes (see the module); ``closed()`` forms the closed forms' record."""
-    if program is None:
-        return closed()
-    if program_operations(program) >= PROGRAM_ALONE:
-        return from_program(program, names)
-    candidates = (closed(), from_program(program, names))
-    return min(candidates, key=lambda c: c.operations)  # the closed forms when equal
+    """The equations generated code takes (see the module): the program's; ``closed()`` forms the
+    closed forms' record where there is no program."""
+    return closed() if program is None else from_program(program, names)
 
 
 class StateNames:

@@ -4,10 +4,11 @@ Every command and every emitter reads a :class:`Derivation`. It holds the
 chapter's closed forms (β, the motions, Q, M and F of eq. 14.19, the
 kinematic equations 14.20) when :func:`gacli.mechanics.equations.derive`
 formed them; for generated code alone
-(:func:`gacli.mechanics.equations.derive_for_code`, a program of at least
-PROGRAM_ALONE operations) it holds the straight-line program instead, and
-the closed forms are left unformed (``closed`` is False). What generated
-code computes is :attr:`Derivation.code` either way (gacli.mechanics.code).
+(:func:`gacli.mechanics.equations.derive_for_code`) it holds the
+straight-line program instead, and the closed forms are left unformed
+(``closed`` is False). What generated code computes is
+:attr:`Derivation.code` either way: the program's equations wherever the
+builder takes the system (gacli.mechanics.code).
 """
 
 from __future__ import annotations
@@ -64,8 +65,8 @@ class Derivation(StateNames):
 
     @functools.cached_property
     def code(self) -> CodeEquations:
-        """q̇, M and F as generated code computes them (:mod:`gacli.mechanics.code`): these closed
-        forms, or the straight-line program where it costs fewer operations."""
+        """q̇, M and F as generated code computes them (:mod:`gacli.mechanics.code`): the
+        straight-line program's, or these closed forms where there is no program in the same speeds."""
         names = tuple(c.name for c in self.system.coordinates)
         if not self.closed:
             return from_program(self.program, names)

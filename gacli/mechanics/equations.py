@@ -25,7 +25,7 @@ from gacli.errors import DerivationError
 from gacli.mechanics.forces import generalized_forces
 from gacli.algebra.matrices import product
 from gacli.mechanics.axes import turned
-from gacli.mechanics.code import PROGRAM_ALONE, program_for, program_operations
+from gacli.mechanics.code import program_for
 from gacli.mechanics.derivation import Derivation
 from gacli.mechanics.motions import BodyMotion, body_motions, motion_context, motion_velocity
 from gacli.mechanics.rates import Rates, solve_rates
@@ -34,13 +34,12 @@ from gacli.model import System
 
 
 def derive_for_code(system: System) -> Derivation | None:
-    """The equations generated code needs, by the program alone, where :mod:`gacli.mechanics.code`
-    would choose it without the closed forms (a program of at least PROGRAM_ALONE operations);
-    None otherwise, and the caller derives the closed forms as usual (docs/program.md)."""
+    """The equations generated code computes, by the program alone (:mod:`gacli.mechanics.code`):
+    the closed forms are not formed. None where the builder does not take the system or would
+    choose other independent rates than the chapter's route; the caller then derives the
+    closed forms as usual (docs/program.md)."""
     program = program_for(system) if _same_choice(system) else None
-    if program is None or program_operations(program) < PROGRAM_ALONE:
-        return None
-    return Derivation(system, program=program)
+    return None if program is None else Derivation(system, program=program)
 
 
 def _same_choice(system: System) -> bool:

@@ -17,7 +17,7 @@ def require_small(derivation, what: str) -> None:
     """Refuse symbolic work on equations too large to print (the bicycle): it would not end."""
     from gacli.algebra.readable import displayable
 
-    # A derivation for code alone (a program of PROGRAM_ALONE operations or more) has no closed forms.
+    # A derivation for code alone (equations.derive_for_code) has no closed forms.
     if derivation.closed and displayable(derivation):
         return
     size = (f"{derivation.code.operations:,} operations even as generated code computes them" if not derivation.closed
