@@ -72,8 +72,16 @@ def contact(tree: FrameTree, links: dict, body: BodyPlacement, rolling: RollingC
         spins, frame = edges, tree.common(frame, plane)
     link = links[body.point]
     fixed = not any(c.free_symbols & coordinates for c in link.components)
-    point, offset = (link.parent, link.components) if link.frame == frame and fixed else (body.point, ZV)
     centre = rolling.centre.terms[0][1] if rolling.centre.terms else ZV
+    if link.frame == frame and fixed:
+        point, offset = link.parent, link.components
+    elif link.frame == body.frame and fixed and link.parent is not None:
+        # A mass centre placed from the geometric centre along the body's own axes (a ball's e
+        # below it): both offsets turn with the body, so they are one, and a ball's c = −link
+        # leaves the contact read from the centre, where nothing of e is formed to cancel.
+        point, offset, centre = link.parent, ZV, tuple(sp.Add(a, b) for a, b in zip(link.components, centre))
+    else:
+        point, offset = body.point, ZV
     n = normal(tree, frame, plane)
     if rolling.semi_axes is not None:
         o, perp, inverse = _ellipsoid_below(tree, n, rolling.semi_axes)
