@@ -178,3 +178,19 @@ def test_numeric_linearization_and_refusals_read_the_program(monkeypatch):
     for command in ("steady", "integrals"):
         result = CliRunner().invoke(app, [command, bicycle])
         assert result.exit_code == 1 and "too large for symbolic work" in result.output, result.output
+
+
+@pytest.mark.parametrize("name, at", [("rolling_disk", "lean=0.3"), ("cylinder_in_cylinder", "theta=0.2"),
+                                      ("appell_hamel", "dot(x)=1"), ("spinning_top", "theta=0.4")])
+def test_code_and_numeric_linearization_never_form_the_closed_forms(monkeypatch, tmp_path, name, at):
+    # One engine for code (issue #28): a small system's generated code and numeric linearization
+    # are its program's, as a large one's are; the closed forms are for what prints them.
+    import gacli.mechanics.equations as equations
+    from gacli.cli import app
+
+    monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
+    path = str(SYSTEMS / f"{name}.yaml")
+    _derive(path, "--format", "c", "--output", f"{tmp_path}/")
+    assert (tmp_path / f"{name}.c").exists()
+    result = CliRunner().invoke(app, ["linearize", path, "--at", at])
+    assert result.exit_code == 0, result.output
