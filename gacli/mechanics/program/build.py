@@ -95,6 +95,8 @@ def program_of(system: System) -> Program:
         programs += built
     if _spheres_above(system):
         programs.append(_program(system, independent, None, False, above=True))
+    if form_rows(system).forms:  # rows stated in N's axes may turn with a vehicle's heading
+        programs += [p for g in grams if (p := _program(system, independent, None, g, columns=True)) is not None]
     return programs[0] if len(programs) == 1 else min(programs, key=cost)
 
 
@@ -114,10 +116,12 @@ def _spheres_above(system: System) -> bool:
 
 
 def _program(system: System, independent: tuple[str, ...], turning: int | None, gram: bool,
-             above: bool = False) -> Program | None:
+             above: bool = False, columns: bool = False) -> Program | None:
     """The program with the stated rows as stated (``turning`` None) or turned (the turning-th of
     forms.FormRows.turnings), a file without frames' points through their dot products or not
-    (``gram``, gacli.mechanics.program.gram); None when there is no such turning."""
+    (``gram``, gacli.mechanics.program.gram); ``columns``: the dependent rates solved through
+    the pairs of them that turn with an angle (solve.turned_columns). None when there is no
+    such turning, or no such pair."""
     names = list(system.rate_names)
     forms = form_rows(system)
     motion, contacts, root = _setup(system, independent, forms, above)
@@ -134,12 +138,14 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
     if held:
         raise Unsupported(f"a constraint nonlinear in the rates holds the dependent rate '{held[0]}'")
     others = [c for c in contacts if root is None or c is not root[1]]
-    kept, columns = _columns(motion, others, forms, reduced)
+    kept, rows = _columns(motion, others, forms, reduced)
     if len(kept.directions) + len(forms.forms) != len(dependent):
         raise Unsupported(f"the rows determine {len(kept.directions) + len(forms.forms)} rates, not the "
                           f"{len(dependent)} dependent ones")
-    solver, passes = _rates(motion, columns, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
-                            dependent)
+    solver, passes = _rates(motion, rows, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
+                            dependent, columns)
+    if columns and not solver.turns:
+        return None
     rates = _kinematics(motion, [c.name for c in system.coordinates], at_root, passes.actual)
     passes = _gamma(system, motion, kept, forms, solver, dependent, passes)
     return replace(_dynamics(system, motion, passes, rates, at_root, gram), independent=tuple(independent))
@@ -156,7 +162,8 @@ def _check_root_alone(motion: Motion, at_root) -> None:
                               "rolling root; write it from the root instead")
 
 
-def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> tuple[Solver, Passes]:
+def _rates(motion: Motion, columns: dict, dt: list, independent, dependent,
+           turn: bool = False) -> tuple[Solver, Passes]:
     """β from A_d β = −A_i (eq. 14.7), β₀ from A_d β₀ = −a₀ where rows move with time, the dependent
     rates β u + β₀, and the partial passes (eq. 14.8)."""
     tape = motion.tape
@@ -166,7 +173,7 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent) -> t
     numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
     if n and rank(numeric) < n:
         raise Unsupported("the rows do not determine the dependent rates from the independent ones")
-    solver = Solver(tape, A_d, on_spheres(motion))
+    solver = Solver(tape, A_d, on_spheres(motion), turn)
     beta = {}
     for qi in independent:
         for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)])):

@@ -95,9 +95,11 @@ class Solver:
     the plan's values on the tape once, then each solve writes only its own.
     """
 
-    def __init__(self, tape: Tape, A: list[list], length=None) -> None:
+    def __init__(self, tape: Tape, A: list[list], length=None, turn: bool = False) -> None:
         """``length``: a squared row length as the program may take it (on the constraints, where
-        the motion is; see gacli.mechanics.program.build), or None to take it as it is."""
+        the motion is; see gacli.mechanics.program.build), or None to take it as it is; ``turn``:
+        solved through the pairs of columns that turn with an angle (:func:`turned_columns`)."""
+        A, self.turns = turned_columns(tape, A) if turn else (A, [])
         self.tape, self.A = tape, A
         order, rows, cols = plan(A)
         self.pivots = [(i, j, tape.let(1 / A[i][j])) for i, j in order]
@@ -113,6 +115,8 @@ class Solver:
         for block in self.blocks:
             rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in block.rows]
             x.update(block.solve(tape, A, rest))
+        for a, b, c, s in self.turns:  # x = R y on the turned pair
+            x[a], x[b] = tape.let(c * x[a] - s * x[b]), tape.let(s * x[a] + c * x[b])
         return [x[j] for j in range(len(A))]
 
 
@@ -173,3 +177,70 @@ def _orthogonal(tape: Tape, B: list[list]) -> bool:
     if n < 2 or n > ORTHOGONAL_LIMIT:
         return False
     return all(tape.vanishes(sp.Add(*(x * y for x, y in zip(B[i], B[j])))) for i in range(n) for j in range(i + 1, n))
+
+
+def turned_columns(tape: Tape, A: list[list]) -> tuple[list[list], list[tuple]]:
+    """A R and the turns R: pairs of columns (a, b) whose entries in every row turn with one angle θ,
+    (p, q) = (p', q') turned by θ with p', q' free of θ, solved as A R y = b and x = R y, R the
+    turn by θ on (a, b). Rows written in N's axes for a vehicle's x, y (cos θ ẋ + sin θ ẏ − w θ̇
+    = r φ̇): along its heading they are constant, and the adjugate's cofactors of sines and
+    cosines, which the program multiplied out and never cancelled, are numbers."""
+    n, turns = len(A), []
+    closed = [[_closed(tape, x) for x in row] for row in A]
+    A = [list(row) for row in A]
+    free = set(range(n))
+    for a in range(n):
+        for b in range(a + 1, n):
+            if a not in free or b not in free:
+                continue
+            turn = _turn(closed, a, b)
+            if turn is None:
+                continue
+            angle, entries = turn
+            for i, (p, q) in enumerate(entries):
+                A[i][a], A[i][b] = (tape.let(p) if p != 0 else 0), (tape.let(q) if q != 0 else 0)
+            turns.append((a, b, tape.let(sp.cos(angle)), tape.let(sp.sin(angle))))
+            free -= {a, b}
+    return A, turns
+
+
+def _closed(tape: Tape, x) -> sp.Expr | None:
+    if x == 0:
+        return sp.S.Zero
+    closed = tape.closed_within(x, _CLOSED_NAMES)
+    return closed if closed is not None and is_small(closed, _SMALL) else None
+
+
+def _turn(closed: list[list], a: int, b: int) -> tuple[sp.Symbol, list[tuple]] | None:
+    """(θ, the pair's entries of A R) where both columns' entries are known and turn with θ; else None."""
+    pairs = [(row[a], row[b]) for row in closed]
+    if any(p is None or q is None for p, q in pairs):
+        return None
+    angles = {f.args[0] for p, q in pairs for f in (p + q).atoms(sp.sin, sp.cos) if f.args[0].is_Symbol}
+    for angle in sorted(angles, key=lambda x: x.name):
+        c, s = sp.cos(angle), sp.sin(angle)
+        turned = [(p * c + q * s, q * c - p * s) for p, q in pairs]
+        if not all(_constant_in(e, angle) for pair in turned for e in pair):
+            continue  # told by numbers first: reducing a quaternion's rows only to fail took seconds
+        entries = [(reduced(p), reduced(q)) for p, q in turned]
+        if not any(angle in p.free_symbols or angle in q.free_symbols for p, q in entries):
+            return angle, entries
+    return None
+
+
+# Generic values for the numeric test of _constant_in (fixed: the choice must not depend on chance).
+_AT = (0.4137, -0.7291, 1.1963, 0.6512, -0.2879, 0.9347)
+
+
+def _constant_in(e: sp.Expr, angle: sp.Symbol) -> bool:
+    """Whether ``e`` takes the same value at two values of ``angle``, the others at generic values."""
+    if angle not in e.free_symbols:
+        return True
+    others = {x: sp.Float(_AT[i % len(_AT)] + i / 7) for i, x in enumerate(sorted(e.free_symbols - {angle},
+                                                                                   key=lambda x: x.name))}
+    fixed = e.xreplace(others)
+    try:
+        a, b = complex(fixed.xreplace({angle: sp.Float(0.37)})), complex(fixed.xreplace({angle: sp.Float(1.91)}))
+    except (TypeError, ValueError, ZeroDivisionError):
+        return False
+    return abs(a - b) <= 1e-9 * (1 + abs(a) + abs(b))
