@@ -13,7 +13,8 @@ closed forms as shared expression graphs.
 
 Modules: ``tape`` (assignments, value numbering, the zero test), ``vectors``,
 ``frames`` (the frame tree), ``contacts`` and ``motion`` (points, rolling),
-``forms`` (rows stated as forms), ``formbodies`` (bodies of a file without frames),
+``forms`` (rows stated as forms), ``formbodies`` (bodies of a file without frames;
+``heading``: their points along the heading the stated rows were solved along),
 ``rows`` and ``solve`` (eqs. 14.1, 14.7), ``units``, ``loads`` and
 ``assemble`` (eqs. 14.13-14.19), ``build`` (the steps in order), ``record``
 (the :class:`Program`), ``support`` (what is taken).

@@ -34,6 +34,9 @@ class Passes:
     partial: tuple[Pass, ...]
     actual: Pass
     gamma: Pass
+    # (x, y, θ): the pair of coordinates solved along the heading θ (solve.turned_columns), whose
+    # rates along it each pass holds (Pass.along); None without such a pair.
+    heading: tuple | None = None
 
 
 @dataclass(frozen=True)

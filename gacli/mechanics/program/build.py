@@ -174,18 +174,39 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent,
     if n and rank(numeric) < n:
         raise Unsupported("the rows do not determine the dependent rates from the independent ones")
     solver = Solver(tape, A_d, on_spheres(motion), turn)
-    beta = {}
+    beta, along = {}, {qi: {} for qi in (*independent, None)}
     for qi in independent:
-        for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)])):
+        for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)], along[qi])):
             beta[(qd, qi)] = x
-    beta0 = dict(zip(dependent, solver.solve([-a for a in dt]))) if any(a != 0 for a in dt) else {}
+    beta0 = dict(zip(dependent, solver.solve([-a for a in dt], along[None]))) if any(a != 0 for a in dt) else {}
     rates = {qi: S.rate(qi) for qi in independent}
     for qd in dependent:
         rates[qd] = tape.let(sp.Add(*(beta[(qd, qi)] * rates[qi] for qi in independent), beta0.get(qd, 0)))
-    partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}}) for qi in independent)
+    heading = _heading(solver, dependent)
+    partial = tuple(Pass(f"u_{qi}", {qi: ONE, **{qd: beta[(qd, qi)] for qd in dependent}},
+                         along=_along(solver, heading, along[qi])) for qi in independent)
     if not beta0 and not any(motion.tree.timed(e) for e in motion.tree.edges):
         motion.tree.speeds = [(p, S.rate(qi)) for p, qi in zip(partial, independent)]
-    return solver, Passes(partial, Pass("actual", rates, timed=True), Pass("gamma", {}))
+    actual = {q: tape.let(sp.Add(*(p.rate_along(q) * rates[qi] for p, qi in zip(partial, independent)),
+                                 _along(solver, heading, along[None]).get(q, 0))) for q in (heading or ())[:2]}
+    return solver, Passes(partial, Pass("actual", rates, timed=True, along=actual), Pass("gamma", {}), heading)
+
+
+def _heading(solver: Solver, dependent: list[str]) -> tuple | None:
+    """(x, y, θ) of the solver's first turned pair (solve.turned_columns), or None."""
+    if not solver.turns:
+        return None
+    a, b, _, _, angle = solver.turns[0]
+    return dependent[a], dependent[b], angle
+
+
+def _along(solver: Solver, heading: tuple | None, values: dict) -> dict:
+    """The heading pair's rates along it, from what Solver.solve kept of one solve (zero if none)."""
+    if heading is None:
+        return {}
+    a, b, _, _, _ = solver.turns[0]
+    y = values.get((a, b), (sp.S.Zero, sp.S.Zero))
+    return {heading[0]: y[0], heading[1]: y[1]}
 
 
 def on_spheres(motion: Motion):
@@ -239,8 +260,10 @@ def _gamma(system: System, motion: Motion, kept: R.Rows, forms: FormRows, solver
             acceleration[c.body.name] = motion.contact_acceleration0(c, passes.actual)
     b0 = [tape.let(dot(e, acceleration[c.body.name])) for c, e in kept.directions]
     b0 += forms.rest(tape, system, passes.actual)
-    gamma = dict(zip(dependent, solver.solve([-b for b in b0]))) if dependent else {}
-    return Passes(passes.partial, passes.actual, Pass("gamma", gamma))
+    along: dict = {}
+    gamma = dict(zip(dependent, solver.solve([-b for b in b0], along))) if dependent else {}
+    gamma_pass = Pass("gamma", gamma, along=_along(solver, passes.heading, along))
+    return Passes(passes.partial, passes.actual, gamma_pass, passes.heading)
 
 
 def _dynamics(system: System, motion: Motion, passes: Passes, rates: dict, at_root: dict, gram: bool) -> Program:

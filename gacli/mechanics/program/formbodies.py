@@ -26,6 +26,7 @@ from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.assemble import Passes, Sums
 from gacli.mechanics.program.despun import Despin, despin
 from gacli.mechanics.program.forms import time_derivative
+from gacli.mechanics.program import heading
 from gacli.mechanics.program.gram import Gram, add_translation, add_work
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
@@ -52,7 +53,13 @@ class FormMotion:
             self._points[key] = self._point(key)
         return self._points[key]
 
+    def turned(self, position) -> bool:
+        """Whether the point is formed along the heading the rows were solved along (heading.takes)."""
+        return heading.takes(self, tuple(as_expr(x) for x in position))
+
     def _point(self, position: tuple) -> tuple[list[tuple], tuple]:
+        if heading.takes(self, position):
+            return heading.point(self, position)
         tape, actual = self.tape, self.passes.actual
         symbols = [S.value(q) for q in self.coordinates]
         J = jacobian_rows(list(position), symbols)  # 3 × n: ∂p/∂q
@@ -118,6 +125,7 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
             add_work(motion, force.point, f, sums)
             continue
         V, _ = motion.point(force.point)
+        f = heading.force(motion, f) if motion.turned(force.point) else f
         for r, v in enumerate(V):
             sums.F[r].append(tape.let(dot(v, f)))
     for torque in system.torques:

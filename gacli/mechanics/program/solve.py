@@ -106,7 +106,8 @@ class Solver:
         self.blocks = [_Block.of(tape, A, r, c, orthogonal, length or (lambda e: e))
                        for r, c, orthogonal in _split(tape, A, rows, cols)]
 
-    def solve(self, b: list) -> list[sp.Expr]:
+    def solve(self, b: list, along: dict | None = None) -> list[sp.Expr]:
+        """x = A⁻¹ b; ``along``, when given, receives y of each turned pair (a, b) before x = R y."""
         tape, A = self.tape, self.A
         x: dict[int, sp.Expr] = {}
         for i, j, inverse in self.pivots:
@@ -115,7 +116,9 @@ class Solver:
         for block in self.blocks:
             rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in block.rows]
             x.update(block.solve(tape, A, rest))
-        for a, b, c, s in self.turns:  # x = R y on the turned pair
+        for a, b, c, s, _ in self.turns:  # x = R y on the turned pair
+            if along is not None:
+                along[(a, b)] = (x[a], x[b])
             x[a], x[b] = tape.let(c * x[a] - s * x[b]), tape.let(s * x[a] + c * x[b])
         return [x[j] for j in range(len(A))]
 
@@ -199,7 +202,7 @@ def turned_columns(tape: Tape, A: list[list]) -> tuple[list[list], list[tuple]]:
             angle, entries = turn
             for i, (p, q) in enumerate(entries):
                 A[i][a], A[i][b] = (tape.let(p) if p != 0 else 0), (tape.let(q) if q != 0 else 0)
-            turns.append((a, b, tape.let(sp.cos(angle)), tape.let(sp.sin(angle))))
+            turns.append((a, b, tape.let(sp.cos(angle)), tape.let(sp.sin(angle)), angle))
             free -= {a, b}
     return A, turns
 

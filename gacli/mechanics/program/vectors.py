@@ -28,9 +28,16 @@ class Pass:
     key: str
     rho: Mapping[str, sp.Expr]
     timed: bool = False
+    # The rates of a pair of coordinates turned back by the heading they were solved along
+    # (gacli.mechanics.program.solve.turned_columns), by the pair's names; empty without a heading.
+    along: Mapping[str, sp.Expr] = None
 
     def rate(self, name: str) -> sp.Expr:
         return self.rho.get(name, ZERO)
+
+    def rate_along(self, name: str) -> sp.Expr:
+        """The rate of ``name`` along the heading (see ``along``)."""
+        return (self.along or {}).get(name, ZERO)
 
 
 def add(*vs: Sequence) -> tuple:
