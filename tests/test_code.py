@@ -182,9 +182,12 @@ def test_the_code_of_every_frame_fixture_compiles_strictly(path, compiler, tmp_p
 @pytest.mark.parametrize("framed, unframed", [
     (TESTS / "frames" / "car.yaml", TESTS / "twins" / "car_format1.yaml"),
     (TESTS / "twins" / "tricycle_front_drive.yaml", TESTS / "twins" / "tricycle_front_drive_format1.yaml"),
+    (ROOT / "benchmarks" / "corpus" / "forklift.yaml", ROOT / "benchmarks" / "corpus" / "forklift_format1.yaml"),
 ], ids=lambda p: p.stem)
 def test_a_vehicle_written_without_frames_costs_near_its_framed_twin(framed, unframed):
     # Rows stated in N's axes (cos θ ẋ + sin θ ẏ − w θ̇ = r φ̇) turn with the heading: solved along
-    # it (solve.turned_columns), their cofactors are numbers, not products of sines and cosines
-    # (the car: 215 → 182 operations against 133 with frames; the tricycle: 392 → 355 against 249).
-    assert derived_file(unframed).code.operations <= 1.45 * derived_file(framed).code.operations
+    # it (solve.turned_columns), their cofactors are numbers, not products of sines and cosines, and
+    # the bodies' points formed along it (program/heading.py) carry no sin θ, cos θ of a hitch.
+    # The car: 215 → 182 → 101 operations (133 with frames); the tricycle 392 → 355 → 284 (249);
+    # the forklift 391 → 381 → 294 (233).
+    assert derived_file(unframed).code.operations <= 1.3 * derived_file(framed).code.operations

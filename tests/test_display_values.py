@@ -70,6 +70,8 @@ def test_printed_equations_and_rates_are_the_derived_ones(path, rng):
             equations[m["name"]] = _read(m["lhs"], scope) - _read(m["rhs"], scope)
         elif m := RATE.match(line):
             rates[m["name"]] = _read(m["value"], scope)
+            # A named printout's later quantities read the dependent rate as it was printed (eq. 14.7).
+            scope.rates[(m["name"], 1)] = rates[m["name"]]
     assert set(equations) == set(d.independent)
     for s, name in enumerate(d.independent):
         derived = sum((d.mass_matrix[s, r] * a for r, a in enumerate(d.speed_rates)), sp.S.Zero) - d.forcing[s]

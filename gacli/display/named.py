@@ -191,7 +191,7 @@ def from_program(program, taken: set[str]) -> Named:
     their rate, the rest ``z1, z2, ...`` or written in place (see the module)."""
     labels = dict(program.labels)
     outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
-    uses = _uses(program.assignments, outputs)
+    uses, inner = _uses(program.assignments, outputs), _uses(program.assignments, [])
     rate_of = {e: q for q, e in program.rates if e.is_Symbol and e not in labels and e != S.rate(q)}
     namer = _Namer(taken)
     shown: dict[sp.Symbol, sp.Expr] = {}
@@ -201,8 +201,11 @@ def from_program(program, taken: set[str]) -> Named:
         value = value.xreplace(shown)
         label = labels.get(symbol)
         if label is not None and label[0] in ("M", "F"):
-            outputs_of[symbol] = value  # printed as M and F themselves
-            continue
+            if not inner.get(symbol):
+                outputs_of[symbol] = value  # printed as M and F themselves
+                continue
+            label = None  # an entry other steps read as well (the tape gave both one value): named
+
         if label is None and symbol not in rate_of and (is_inline(value) or
                                                          (uses.get(symbol, 0) <= 1 and _ops(value) <= INLINE_OPS)):
             shown[symbol] = value
