@@ -116,10 +116,10 @@ class Solver:
         for block in self.blocks:
             rest = [tape.let(b[i] - sp.Add(*(A[i][k] * x[k] for k in x))) for i in block.rows]
             x.update(block.solve(tape, A, rest))
-        for a, b, c, s, _ in self.turns:  # x = R y on the turned pair
+        for i, j, c, s, _ in self.turns:  # x = R y on the turned pair
             if along is not None:
-                along[(a, b)] = (x[a], x[b])
-            x[a], x[b] = tape.let(c * x[a] - s * x[b]), tape.let(s * x[a] + c * x[b])
+                along[(i, j)] = (x[i], x[j])
+            x[i], x[j] = tape.let(c * x[i] - s * x[j]), tape.let(s * x[i] + c * x[j])
         return [x[j] for j in range(len(A))]
 
 
