@@ -38,6 +38,9 @@ def test_every_system_prints_its_equations_within_the_bound(path):
     text = plain_report(d.system.title or d.system.name, derivation_report(d))
     assert "too large" not in text
     assert "Gibbs-Appell equations, eq. (14.19)" in text
+    # Every quantity is named or written out: no value of the program's tape is left raw (stop 40
+    # printed _p[143] in a unicycle's M, an entry other steps read too; display/named.py).
+    assert "_p[" not in text
     if path.stem in DIGITS:
         return
     operations = d.code.operations
