@@ -18,7 +18,6 @@ from pathlib import Path
 
 from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.loader.loading import load_in_stages
-from gacli.mechanics.code import PROGRAM_ALONE
 from gacli.mechanics.equations import Derivation, derive, derive_for_code
 from gacli.mechanics.program.record import program_operations
 from gacli.model import System
@@ -43,6 +42,12 @@ def read(path: str | Path) -> SourceFile:
         data = sys.stdin.buffer.read(MAX_FILE_BYTES + 1)
         return parse_source(data, STDIN_NAME)
     return read_source(path)
+
+
+# Operations of a program from which a printout names the program's quantities without forming
+# the closed forms at all (PRINTOUT, below): no system of the repository whose program
+# is this large prints written out, and forming its closed forms is what costs a bicycle its time.
+PROGRAM_ALONE = 800
 
 
 # What a command reads of the derivation, which decides how much of it is formed.

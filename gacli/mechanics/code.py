@@ -38,11 +38,6 @@ from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
 from gacli.model import System
 
-# Operations of a program from which a printout names the program's quantities without forming
-# the closed forms at all (gacli.pipeline, PRINTOUT): no system of the repository whose program
-# is this large prints written out, and forming its closed forms is what costs a bicycle its time.
-PROGRAM_ALONE = 800
-
 
 @dataclass(frozen=True)
 class CodeEquations:
@@ -172,12 +167,6 @@ def _rational(e: sp.Expr) -> bool:
     if e.is_number or e.atoms(sp.Function) or any(not p.exp.is_Integer or abs(p.exp) > 4 for p in powers):
         return False
     return any(p.exp.is_negative and not p.base.is_Atom for p in powers)
-
-
-def chosen(program: Program | None, names: tuple[str, ...], closed) -> CodeEquations:
-    """The equations generated code takes (see the module): the program's; ``closed()`` forms the
-    closed forms' record where there is no program."""
-    return closed() if program is None else from_program(program, names)
 
 
 class StateNames:

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.mechanics.code import CodeEquations, StateNames, chosen, from_closed, from_program, program_for
+from gacli.mechanics.code import CodeEquations, StateNames, from_closed, from_program, program_for
 from gacli.mechanics.gibbs import gibbs_function
 from gacli.mechanics.motions import BodyMotion
 from gacli.mechanics.program import Program
@@ -73,7 +73,9 @@ class Derivation(StateNames):
         program = program_for(self.system)
         if program is not None and program.independent != self.independent:
             program = None  # M and F in other speeds: not the same equations
-        return chosen(program, names, lambda: from_closed(self.kinematic_equations, self.mass_matrix, self.forcing))
+        if program is None:
+            return from_closed(self.kinematic_equations, self.mass_matrix, self.forcing)
+        return from_program(program, names)
 
     @functools.cached_property
     def gibbs(self) -> sp.Expr:

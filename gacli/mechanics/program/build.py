@@ -187,8 +187,9 @@ def _rates(motion: Motion, columns: dict, dt: list, independent, dependent,
                          along=_along(solver, heading, along[qi])) for qi in independent)
     if not beta0 and not any(motion.tree.timed(e) for e in motion.tree.edges):
         motion.tree.speeds = [(p, S.rate(qi)) for p, qi in zip(partial, independent)]
-    actual = {q: tape.let(sp.Add(*(p.rate_along(q) * rates[qi] for p, qi in zip(partial, independent)),
-                                 _along(solver, heading, along[None]).get(q, 0))) for q in (heading or ())[:2]}
+    moving = _along(solver, heading, along[None])  # β₀'s part, where rows move with time
+    actual = {q: tape.let(sp.Add(*(p.rate_along(q) * rates[qi] for p, qi in zip(partial, independent)), moving[q]))
+              for q in moving}
     return solver, Passes(partial, Pass("actual", rates, timed=True, along=actual), Pass("gamma", {}), heading)
 
 

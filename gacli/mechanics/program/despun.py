@@ -25,6 +25,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
+from gacli.mechanics.program.vectors import turned
 from gacli.model import Form
 
 
@@ -51,10 +52,7 @@ class Despin:
         phi = S.value(self.coordinate)
         if all(_turns(v[i], v[k], phi, self.sense)):
             return tuple(as_expr(x).xreplace({phi: 0}) for x in v)
-        c, s = sp.cos(phi), self.sense * sp.sin(phi)
-        out = list(v)
-        out[i], out[k] = c * v[i] + s * v[k], -s * v[i] + c * v[k]
-        return tuple(out)
+        return turned(v, self.axis, sp.cos(phi), -self.sense * sp.sin(phi))
 
 
 def despin(inertia, forms: tuple[Form, Form, Form], coordinates: list[str]) -> Despin | None:

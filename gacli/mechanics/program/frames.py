@@ -23,7 +23,7 @@ import sympy as sp
 from gacli.frame_model import INERTIAL, FrameEdge
 from gacli.loader.frames import quaternion_rates, quaternion_rotation
 from gacli.mechanics.program.tape import Tape
-from gacli.mechanics.program.vectors import ONE, ZERO, ZV, Pass, add, cross, scale, unit
+from gacli.mechanics.program.vectors import ONE, ZERO, ZV, Pass, add, cross, scale, turned, unit
 
 
 class FrameTree:
@@ -102,10 +102,7 @@ class FrameTree:
         """R(angle) v about a frame axis (v_parent = R v_child); cos and sin of the angle named once."""
         c, s = self.tape.let(sp.cos(angle)), sp.sin(angle)
         s = -self.tape.let(-s) if s.could_extract_minus_sign() else self.tape.let(s)
-        j, k = (axis + 1) % 3, (axis + 2) % 3
-        out = list(v)
-        out[j], out[k] = c * v[j] - s * v[k], s * v[j] + c * v[k]
-        return self.tape.vec(out)
+        return self.tape.vec(turned(v, axis, c, s))
 
     def express(self, v, src: str, dst: str, key=None) -> tuple:
         """v's components along dst, from its components along src (``key``: remember the result)."""

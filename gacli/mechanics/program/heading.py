@@ -25,7 +25,7 @@ from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
 from gacli.mechanics.program.forms import closed_time_derivative
-from gacli.mechanics.program.vectors import ZERO, add, scale
+from gacli.mechanics.program.vectors import ZERO, add, scale, turned
 
 _X, _Y = (sp.S.One, ZERO, ZERO), (ZERO, sp.S.One, ZERO)
 
@@ -45,8 +45,7 @@ def takes(motion, position: tuple) -> bool:
 
 def turned_back(v, angle: sp.Symbol) -> tuple:
     """v's components along axes turned by ``angle`` about z, as closed forms (unreduced)."""
-    c, s = sp.cos(angle), sp.sin(angle)
-    return c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2]
+    return turned(v, 2, sp.cos(angle), -sp.sin(angle))
 
 
 def point(motion, position: tuple) -> tuple[list[tuple], tuple]:
@@ -72,4 +71,4 @@ def point(motion, position: tuple) -> tuple[list[tuple], tuple]:
 def force(motion, f: tuple) -> tuple:
     """A force given along N, along the heading (its components are program values)."""
     c, s = (motion.tape.let(g(motion.passes.heading[2])) for g in (sp.cos, sp.sin))
-    return motion.tape.vec((c * f[0] + s * f[1], -s * f[0] + c * f[1], f[2]))
+    return motion.tape.vec(turned(f, 2, c, -s))

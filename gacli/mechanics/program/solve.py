@@ -22,6 +22,7 @@ from gacli.algebra.blocks import block_triangular
 from gacli.algebra.graph import is_small
 from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
+from gacli.mechanics.program.vectors import turned
 
 BLOCK = 6  # the adjugate's minors grow as 2^n: a larger coupled block is refused (never met yet)
 # Orthogonality is tested pair by pair at generic points: beyond this many rows the test itself
@@ -221,11 +222,10 @@ def _turn(closed: list[list], a: int, b: int) -> tuple[sp.Symbol, list[tuple]] |
         return None
     angles = {f.args[0] for p, q in pairs for f in (p + q).atoms(sp.sin, sp.cos) if f.args[0].is_Symbol}
     for angle in sorted(angles, key=lambda x: x.name):
-        c, s = sp.cos(angle), sp.sin(angle)
-        turned = [(p * c + q * s, q * c - p * s) for p, q in pairs]
-        if not all(_constant_in(e, angle) for pair in turned for e in pair):
+        back = [turned((p, q, 0), 2, sp.cos(angle), -sp.sin(angle))[:2] for p, q in pairs]
+        if not all(_constant_in(e, angle) for pair in back for e in pair):
             continue  # told by numbers first: reducing a rattleback's body-rate rows to find no turn took 4.5 s
-        entries = [(reduced(p), reduced(q)) for p, q in turned]
+        entries = [(reduced(p), reduced(q)) for p, q in back]
         if not any(angle in p.free_symbols or angle in q.free_symbols for p, q in entries):
             return angle, entries
     return None

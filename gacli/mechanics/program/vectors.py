@@ -69,6 +69,14 @@ def matrix_times(rows: Sequence[Sequence], v: Sequence) -> tuple:
     return tuple(dot(row, v) for row in rows)
 
 
+def turned(v: Sequence, axis: int, c, s) -> tuple:
+    """v turned about a frame axis by the angle of cosine c and sine s (R v; with −s, turned back)."""
+    j, k = (axis + 1) % 3, (axis + 2) % 3
+    out = list(v)
+    out[j], out[k] = c * v[j] - s * v[k], s * v[j] + c * v[k]
+    return tuple(out)
+
+
 def isotropic(inertia: Sequence[Sequence]) -> bool:
     """I = λ 1 (a uniform sphere or shell, a cube): its rotation terms read alike along any axes."""
     return all(inertia[i][j] == (inertia[0][0] if i == j else 0) for i in range(3) for j in range(3))
