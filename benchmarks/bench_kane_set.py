@@ -321,7 +321,8 @@ def measure(name: str, options) -> dict:
     from models import SYSTEMS
 
     path = SYSTEMS[name][0]
-    result = {"system": name, "file": str(path.relative_to(ROOT)), "what": SYSTEMS[name][2]}
+    shown = path.relative_to(ROOT) if path.is_relative_to(ROOT) else path
+    result = {"system": name, "file": str(shown), "what": SYSTEMS[name][2]}
     result["worker"] = run_worker(name, options, code_only=False)
     if "ops_gacli" not in result["worker"]:
         # The closed forms did not come: measure the route `--format c` takes, if it has one.
@@ -334,6 +335,8 @@ def run_worker(name: str, options, code_only: bool) -> dict:
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(scratch) / "result.json"
         argv = [sys.executable, __file__, "--worker", name, "--result", str(out), "--seed", str(options.seed)]
+        if options.extra is not None:
+            argv += ["--extra", str(options.extra.resolve())]
         run = child_run([*argv, "--code-only"] if code_only else argv, options.timeout)
         data = json.loads(out.read_text(encoding="utf-8")) if out.exists() else {"stage": "start"}
     data["cpu_s"], data["timeout"] = run["cpu_s"], bool(run.get("timeout"))
@@ -429,14 +432,30 @@ def parse(argv):
     parser.add_argument("--seed", type=int, default=20261126, help="the random states")
     parser.add_argument("--json", type=Path, help="also save every number here")
     parser.add_argument("--from-json", type=Path, help="print the table of a saved run instead of running")
+    parser.add_argument("--extra", type=Path, help="a Python file whose SYSTEMS (as in kane_set/models.py) join the set")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     parser.add_argument("--result", type=Path, help=argparse.SUPPRESS)
     parser.add_argument("--code-only", action="store_true", help=argparse.SUPPRESS)
     return parser.parse_args(argv)
 
 
+def _join_extra(path: Path | None) -> None:
+    """Add the systems of a file written beside the set (a variant tried before it joins models.py)."""
+    if path is None:
+        return
+    import importlib.util
+
+    import models
+
+    spec = importlib.util.spec_from_file_location("kane_set_extra", path)
+    extra = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(extra)
+    models.SYSTEMS.update(extra.SYSTEMS)
+
+
 def main(argv=None) -> int:
     options = parse(argv)
+    _join_extra(options.extra)
     if options.worker:
         worker(options.worker, options.result, options.code_only, options.seed)
         return 0
