@@ -3,9 +3,13 @@
 The grammar admits sin … tanh, exp, log, sqrt, abs, sign and atan2
 (:mod:`gacli.read.expr.build`); differentiation adds Heaviside and DiracDelta
 (from abs and sign) and simplification can add cot, sec and csc. A backend
-without an entry refuses the function: complex arithmetic has no Abs or
-sign, because the complex step of :mod:`gacli.linearize` needs functions
-analytic in their argument, and its coverage is kept as it always was.
+without an entry refuses the function. In complex arithmetic abs and sign
+are continued from the real line, |z| = z sign(Re z) and sign(Re z): the
+complex step of :mod:`gacli.linearize` needs functions analytic in their
+argument, and these are, away from Re z = 0, with the derivatives of |x|
+and sign x there. So a spring along one axis, whose length is |x + d|, or
+a dry friction −μ sign(ẋ), is evaluated at the program builder's generic
+points and linearized by the complex step like any other load.
 """
 
 from __future__ import annotations
@@ -32,6 +36,15 @@ def _atan2(y: complex, x: complex) -> complex:
     return complex(real, (x.real * y.imag - y.real * x.imag) / (x.real ** 2 + y.real ** 2))
 
 
+def _abs(z: complex) -> complex:
+    """|x| continued from the real line: z or −z by the sign of Re z (see the module)."""
+    return -z if z.real < 0 else z
+
+
+def _sign(z: complex) -> complex:
+    return complex((z.real > 0) - (z.real < 0))
+
+
 FUNCTIONS: dict[type, Function] = {
     sp.sin: Function(cmath.sin, mpmath.sin), sp.cos: Function(cmath.cos, mpmath.cos),
     sp.tan: Function(cmath.tan, mpmath.tan), sp.asin: Function(cmath.asin, mpmath.asin),
@@ -39,7 +52,7 @@ FUNCTIONS: dict[type, Function] = {
     sp.sinh: Function(cmath.sinh, mpmath.sinh), sp.cosh: Function(cmath.cosh, mpmath.cosh),
     sp.tanh: Function(cmath.tanh, mpmath.tanh), sp.exp: Function(cmath.exp, mpmath.exp),
     sp.log: Function(cmath.log, mpmath.log), sp.atan2: Function(_atan2, mpmath.atan2),
-    sp.Abs: Function(None, mpmath.fabs), sp.sign: Function(None, mpmath.sign),
+    sp.Abs: Function(_abs, mpmath.fabs), sp.sign: Function(_sign, mpmath.sign),
     sp.cot: Function(None, mpmath.cot), sp.sec: Function(None, mpmath.sec), sp.csc: Function(None, mpmath.csc),
 }
 
