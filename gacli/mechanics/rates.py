@@ -87,22 +87,30 @@ class Rates:
 def relation_rows(system: System) -> tuple[list[tuple[str, object, Form]], list[str]]:
     """The rows A ṙ + a₀ = 0: constraints (14.1) then quasi definitions (14.2).
 
-    A derived row (rolling contact) that depends on the rows before it is left
-    out: it says again what they say.
+    A derived row (rolling contact) that depends on the rows the file states (its constraints and
+    quasi-coordinates) and the derived rows before it is left out: it says again what they say (a
+    ball in a quaternion frame: its row along the normal is the unit norm's, on the unit sphere).
     """
+    names = list(system.rate_names)
+    stated = [c.form for c in system.constraints if not c.derived]
+    stated += [q.definition for q in system.quasi_coordinates if q.definition is not None]
+    derived = [c.form for c in system.constraints if c.derived]
+    # One point for every row: rows evaluated apart draw their symbols' values apart.
+    numeric = (_numeric(sp.Matrix([[f.coefficient(n) for n in names] for f in (*stated, *derived)]), system)
+               if derived else np.zeros((0, len(names))))
+    kept, later = numeric[:len(stated)], iter(numeric[len(stated):])
     rows = []
-    kept = np.zeros((0, len(system.rate_names)))
     for i, c in enumerate(system.constraints):
         if c.derived:
-            numeric = _numeric(sp.Matrix([[c.form.coefficient(n) for n in system.rate_names]]), system)
-            if rank(np.vstack([kept, numeric])) == kept.shape[0]:
+            row = next(later)[None, :]
+            if rank(np.vstack([kept, row])) == rank(kept):
                 continue
-            kept = np.vstack([kept, numeric])
+            kept = np.vstack([kept, row])
         rows.append((f"constraints[{i}]", c.location, c.form))
     for q in system.quasi_coordinates:
         if q.definition is not None:
             rows.append((f"quasi_coordinates.{q.name}", q.location, q.definition))
-    return rows, list(system.rate_names)
+    return rows, names
 
 
 def solve_rates(system: System) -> Rates:
@@ -186,7 +194,7 @@ def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
     if A.rows == 0:
         return np.zeros((0, A.cols))
     for attempt in range(5):
-        point = random_point(A.free_symbols, SEED + attempt)
+        point = on_unit_quaternions(random_point(A.free_symbols, SEED + attempt), system)
         try:
             values = np.array(A.xreplace(point).evalf(20).tolist(), dtype=complex)
         except (TypeError, ValueError, ArithmeticError):
@@ -196,6 +204,17 @@ def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
     raise _error(system, system.location, "",
                  "the coefficients of the constraints and quasi-coordinates cannot be evaluated "
                  "to finite numbers at generic points")
+
+
+def on_unit_quaternions(point: dict, system: System) -> dict:
+    """``point`` with each frame's Euler parameters scaled onto the unit sphere, where the rows hold:
+    a ball in a quaternion frame has a rolling row along the normal that vanishes only there (its
+    centre's height is r whatever the attitude), and counted off it, it took a degree of freedom."""
+    for edge in (system.frames.edges if system.frames is not None else ()):
+        if edge.quaternion is not None and all(e in point for e in edge.quaternion):
+            norm = sp.sqrt(sum(point[e] ** 2 for e in edge.quaternion))
+            point.update({e: sp.Float(point[e] / norm, 20) for e in edge.quaternion})
+    return point
 
 
 def _check_rank(system: System, rows, numeric: np.ndarray) -> None:
