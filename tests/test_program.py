@@ -70,10 +70,12 @@ def _states(system, speeds, count: int = 3, seed: int = 20261122) -> list[dict]:
     return out
 
 
-def run(program: Program, states: list[dict]) -> list[np.ndarray]:
-    """q̇, M, F of the program at each state: the assignments evaluated in order, as generated code would."""
+def run(program: Program, states: list[dict], forces: bool = False) -> list[np.ndarray]:
+    """q̇, M, F of the program at each state: the assignments evaluated in order, as generated code
+    would; ``forces``: Q instead, which the printout reads off the program."""
     steps = [(name, Evaluator([e])) for name, e in program.assignments]
-    outputs = Evaluator([e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing))
+    outputs = Evaluator(list(program.generalized_forces) if forces else
+                        [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing))
     results = []
     for state in states:
         env = dict(state)
@@ -119,6 +121,11 @@ def test_the_program_agrees_with_the_closed_forms_or_says_why_not(path):
     states = _states(system, derivation.speeds)
     for ours, theirs in zip(run(program, states), _closed(derivation, states)):
         assert _relative(ours, theirs) < TOLERANCE
+    # Q (eq. 14.13), kept beside F for the printout: the loads' share of F alone.
+    assert program.generalized_forces is not None
+    closed = Evaluator(list(derivation.generalized_forces))
+    for ours, state in zip(run(program, states, forces=True), states):
+        assert _relative(ours, np.real(np.array(closed(state)))) < TOLERANCE
 
 
 def test_refusals_name_their_reason():
@@ -314,3 +321,55 @@ def test_a_tiny_number_in_the_file_is_not_taken_for_a_rounding_error():
     text = CAR.read_text(encoding="utf-8").replace("inputs: [T, S]", "inputs: [T, S, K]")
     text = text.replace("loads:\n", "loads:\n  - {force: {chassis: [0, 1e-12*K, 0]}, at: front_hub}\n")
     assert "smaller than" in _agrees_or_refuses(text)
+
+
+def test_a_spring_along_one_axis_and_dry_friction_are_taken():
+    # |x + d| and sign(dot(x)) are evaluated at the builder's generic points (continued from the real
+    # line, gacli.numeric.functions): such a file took the longer closed forms for its code.
+    system = loads("""
+gacli: 1
+name: walled_cart
+parameters: [M, m, l, g, k, d, L0, mu]
+coordinates: [x, theta]
+frames:
+  pole: {rotations: [[z, theta]]}
+points:
+  wall: {N: [-d, 0, 0]}
+  hinge: {N: [x, 0, 0]}
+  tip: {from: hinge, pole: [0, -l, 0]}
+bodies:
+  cart: {mass: M, position: hinge}
+  bob: {mass: m, position: tip}
+loads:
+  - {spring: k, between: [wall, hinge], length: L0}
+  - {force: {N: [0, -m*g, 0]}, at: tip}
+work: -mu*sign(dot(x))*dx
+""")
+    _assert_taken_and_agrees(system)
+
+
+def test_a_ball_in_a_quaternion_frame_with_an_offset_centre_keeps_its_degrees_of_freedom():
+    # Its rolling row along the normal is the unit norm's row, on the unit sphere only: ranked at a
+    # point off it (or evaluated at another point than the rows it was ranked against) it was kept,
+    # took a degree of freedom, and the closed route refused the file (gacli.mechanics.rates).
+    system = loads("""
+gacli: 1
+name: ball_quaternion
+parameters: [m, r, d, e, A, B, C, g]
+coordinates: [x, y, e0, e1, e2, e3]
+quasi_coordinates: [w_1, w_2, w_3]
+independent: [w_1, w_2, w_3]
+frames:
+  ball: {quaternion: [e0, e1, e2, e3], rates: [w_1, w_2, w_3]}
+points:
+  geo: {N: [x, y, r]}
+  G: {from: geo, ball: [d, 0, -e]}
+bodies:
+  ball: {mass: m, position: G, frame: ball, inertia: [A, B, C]}
+rolling:
+  - {body: ball, radius: r, centre: [-d, 0, e]}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: ball}
+""")
+    assert derive(system).k == 3
+    _assert_taken_and_agrees(system)

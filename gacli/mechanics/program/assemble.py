@@ -41,14 +41,23 @@ class Passes:
 
 @dataclass(frozen=True)
 class Sums:
-    """The terms of M (r ≤ s) and F gathered from every unit and load, summed once at the end."""
+    """The terms of M (r ≤ s) and F gathered from every unit and load, summed once at the end, and
+    the loads' own terms of F again in Q (eq. 14.13), which the printout shows and code never reads:
+    where a unit's F term holds its loads and its inertia in one dot product, Q's is a second
+    expression over the same assigned symbols, never assigned itself."""
 
     M: list
     F: list
+    Q: list
 
     @staticmethod
     def empty(k: int) -> "Sums":
-        return Sums([[[] for _ in range(k)] for _ in range(k)], [[] for _ in range(k)])
+        return Sums([[[] for _ in range(k)] for _ in range(k)], [[] for _ in range(k)], [[] for _ in range(k)])
+
+    def load(self, r: int, term: sp.Expr) -> None:
+        """A term of F that is all load: a term of Q_r too."""
+        self.F[r].append(term)
+        self.Q[r].append(term)
 
 
 @dataclass(frozen=True)
@@ -132,9 +141,11 @@ def assemble(motion: Motion, u: Unit, loads: UnitLoads, passes: Passes, sums: Su
     if inertia is not None:
         _rotation_mass(motion, u, m, inertia, lam, sums)
     tape.stage = "F"
-    effective = tape.vec(add(loads.resultant(motion.tree, m.frame), scale(-mass, m.a_rest)))
+    resultant = loads.resultant(motion.tree, m.frame)
+    effective = tape.vec(add(resultant, scale(-mass, m.a_rest)))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.V[r], effective)))
+        sums.Q[r].append(dot(m.V[r], resultant))
     if inertia is not None:
         _rotation_forcing(motion, u, m, inertia, lam, loads, passes, sums)
 
@@ -182,12 +193,14 @@ def _rotation_forcing(motion: Motion, u: Unit, m: UnitMotion, inertia, lam: list
     torque = tape.vec(add(scale(-1, h), applied))
     for r in range(k):
         sums.F[r].append(tape.let(dot(m.W[r], torque)))
+        sums.Q[r].append(dot(m.W[r], applied))
     for j, wheel in enumerate(u.wheels):
         own = sp.Add(*(t[wheel.axis] for body, t in loads.torques if body == wheel.body))
         spin = tape.let(own - lam[j] * (m.alpha_rest[wheel.axis] + rates[j]))
         for r in range(k):
             if m.sigma[j][r] != 0:
                 sums.F[r].append(m.sigma[j][r] * spin)
+                sums.Q[r].append(m.sigma[j][r] * own)
 
 
 def _moment(motion: Motion, moment: tuple) -> tuple:

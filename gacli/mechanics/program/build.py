@@ -295,7 +295,7 @@ def _units(system: System, motion: Motion, passes: Passes, substitution: dict, s
     tape.stage = "F"
     for point, f in loose:
         for r, p in enumerate(passes.partial):
-            sums.F[r].append(tape.let(dot(motion.velocity(point, p, motion.links[point].frame), f)))
+            sums.load(r, tape.let(dot(motion.velocity(point, p, motion.links[point].frame), f)))
 
 
 def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root: dict, substitution: dict,
@@ -311,4 +311,4 @@ def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root:
     for r, p in enumerate(passes.partial):
         root = motion.velocity(motion.root, p, INERTIAL) if set(coefficient) & set(at_root) else None
         for q, c in coefficient.items():
-            sums.F[r].append(c * (root[at_root[q]] if q in at_root else p.rate(q)))
+            sums.load(r, c * (root[at_root[q]] if q in at_root else p.rate(q)))

@@ -127,14 +127,14 @@ def assemble_bodies(motion: FormMotion, sums: Sums) -> None:
         V, _ = motion.point(force.point)
         f = heading.force(motion, f) if motion.turned(force.point) else f
         for r, v in enumerate(V):
-            sums.F[r].append(tape.let(dot(v, f)))
+            sums.load(r, tape.let(dot(v, f)))
     for torque in system.torques:
         if torque.body not in rotations:
             raise Unsupported(f"the torque on '{torque.body}' acts on a body without rotation forms")
         W, _, _, turn = rotations[torque.body]
         tau = tuple(motion.loaded(c) for c in (torque.vector if turn is None else turn.vector(torque.vector)))
         for r, w in enumerate(W):
-            sums.F[r].append(tape.let(dot(w, tau)))
+            sums.load(r, tape.let(dot(w, tau)))
 
 
 def _add_translation(tape: Tape, mass, V: list, a_rest: tuple, sums: Sums) -> None:

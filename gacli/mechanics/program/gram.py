@@ -100,4 +100,4 @@ def add_work(motion, position, force, sums: Sums) -> None:
     """A force's f·V_r = Σ_q ρ_r(q) J_q·f (eq. 14.13)."""
     along, tape = Gram(motion, position).along(force), motion.tape
     for r, p in enumerate(motion.passes.partial):
-        sums.F[r].append(tape.let(sp.Add(*(p.rate(q) * x for q, x in along.items() if p.rate(q) != 0))))
+        sums.load(r, tape.let(sp.Add(*(p.rate(q) * x for q, x in along.items() if p.rate(q) != 0))))

@@ -31,6 +31,9 @@ class Program:
     # (symbol, label) of the assignments the tape labelled (gacli.mechanics.program.tape), in order:
     # what the printout names them by (gacli.display.named).
     labels: tuple[tuple[sp.Symbol, tuple], ...] = ()
+    # Q of eq. (14.13), k entries over the assignments, for the printout alone (not an output: code
+    # never computes it); None where it would read an assignment the outputs do not need.
+    generalized_forces: tuple[sp.Expr, ...] | None = None
 
     @property
     def k(self) -> int:
@@ -69,7 +72,28 @@ def finish(tape: Tape, rates: dict[str, sp.Expr], sums, k: int) -> Program:
         stages[stage] = stages.get(stage, 0) + 1
     labels = tuple((name, tape.labels[name]) for name, _, _ in assignments if name in tape.labels)
     return Program(tuple((name, e) for name, e, _ in assignments), tuple(rates.items()),
-                   tuple(x for row in M for x in row), tuple(F), tuple(stages.items()), labels=labels)
+                   tuple(x for row in M for x in row), tuple(F), tuple(stages.items()), labels=labels,
+                   generalized_forces=_forces(tape, assignments, sums.Q))
+
+
+def _forces(tape: Tape, kept: list, terms: list) -> tuple[sp.Expr, ...] | None:
+    """Q_r, the loads' terms of F_r summed. A load's component the outputs no longer read (−m g,
+    folded with the inertia into one assignment) is written into Q by its value; None where that
+    takes more than a few rounds."""
+    Q = tuple(sp.Add(*t) for t in terms)
+    values = {name: e for name, e, _ in tape.assignments}
+    for name, _, _ in kept:
+        values.pop(name)
+    for _ in range(_FORCE_ROUNDS):
+        missing = {s: values[s] for s in free_symbols(Q) if s in values}
+        if not missing:
+            return Q
+        Q = tuple(q.xreplace(missing) for q in Q)
+    return None
+
+
+# Assignments written into Q one inside another, at most: a load's component is one or two deep.
+_FORCE_ROUNDS = 4
 
 
 def _needed(assignments: list, outputs: list) -> list:
@@ -94,13 +118,26 @@ def inline(program: Program, evaluate: bool = False) -> tuple[list[sp.Expr], lis
     ``evaluate=True``, 1,048 without). The unevaluated forms have the same
     values; ``evaluate=True`` gives SymPy's canonical ones.
     """
+    outputs = _inlined(program, program.outputs, evaluate)
+    n, kk = len(program.rates), program.k * program.k
+    return outputs[:n], outputs[n:n + kk], outputs[n + kk:]
+
+
+def inline_with_forces(program: Program) -> tuple[list[sp.Expr], ...] | None:
+    """(q̇, M, F, Q) in SymPy's canonical forms, for the printout (gacli.mechanics.read_off); None
+    without Q (:attr:`Program.generalized_forces`)."""
+    if program.generalized_forces is None:
+        return None
+    outputs = _inlined(program, [*program.outputs, *program.generalized_forces], True)
+    n, kk, k = len(program.rates), program.k * program.k, program.k
+    return outputs[:n], outputs[n:n + kk], outputs[n + kk:n + kk + k], outputs[n + kk + k:]
+
+
+def _inlined(program: Program, outputs: list[sp.Expr], evaluate: bool) -> list[sp.Expr]:
     values: dict[sp.Symbol, sp.Expr] = {}
     for name, e in program.assignments:
         values[name] = substitute([e], values, evaluate)[0]
-    outputs = [e for _, e in program.rates] + list(program.mass_matrix) + list(program.forcing)
-    outputs = substitute(outputs, values, evaluate)
-    n, kk = len(program.rates), program.k * program.k
-    return outputs[:n], outputs[n:n + kk], outputs[n + kk:]
+    return substitute(outputs, values, evaluate)
 
 
 def program_operations(program: Program) -> int:
