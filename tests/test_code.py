@@ -191,3 +191,19 @@ def test_a_vehicle_written_without_frames_costs_near_its_framed_twin(framed, unf
     # The car: 215 → 182 → 101 operations (133 with frames); the tricycle 392 → 355 → 284 (249);
     # the forklift 391 → 381 → 294 (233).
     assert derived_file(unframed).code.operations <= 1.3 * derived_file(framed).code.operations
+
+
+def test_only_short_divisors_are_divided_out():
+    # Dividing out e·e (four terms) gives a top's M back as A + m l²; a damper's line on a
+    # quaternion body divides by a polynomial of 67 terms, and cancelling over it took 24 s of a
+    # derive for a longer entry (gacli.mechanics.code._rational).
+    import sympy as sp
+
+    from gacli.mechanics.code import _rational
+
+    e = sp.symbols("e0:4", real=True)
+    x = sp.Symbol("x", real=True)
+    norm = sum(c ** 2 for c in e)
+    assert _rational(x * e[0] ** 2 / norm)
+    many = sp.symbols("a0:20", real=True)
+    assert not _rational(x / (norm + sum(a * b for a, b in zip(many, many[1:]))))

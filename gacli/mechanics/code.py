@@ -166,7 +166,16 @@ def _rational(e: sp.Expr) -> bool:
     # would expand past any budget.
     if e.is_number or e.atoms(sp.Function) or any(not p.exp.is_Integer or abs(p.exp) > 4 for p in powers):
         return False
-    return any(p.exp.is_negative and not p.base.is_Atom for p in powers)
+    divisors = {p.base for p in powers if p.exp.is_negative and not p.base.is_Atom}
+    # A divisor of a few terms only (e·e has four): a damper's line on a quaternion body divides by
+    # one of 67, and cancelling over it took 24 s of a derive for an entry 20 times as long.
+    return bool(divisors) and all(is_small(b, DIVISOR_NODES) and len(sp.Add.make_args(sp.expand(b))) <= DIVISOR_TERMS
+                                  for b in divisors)
+
+
+# The divisors :func:`_divided` takes: at most this many nodes, and terms once expanded.
+DIVISOR_NODES = 200
+DIVISOR_TERMS = 16
 
 
 class StateNames:
