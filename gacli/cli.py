@@ -92,7 +92,7 @@ def _budget(path: Path, seconds: float):
 
 def _derive(path: Path, state, needs: str | None = None):
     """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step;
-    ``needs`` is what the command reads of the equations: gacli.pipeline's CODE, PRINTOUT or CLOSED (None)."""
+    ``needs`` is what the command reads of the equations: gacli.pipeline's CODE, PRINTOUT, STEPS or CLOSED (None)."""
     from gacli.display import console
     from gacli.pipeline import CLOSED, run
 
@@ -138,7 +138,7 @@ def derive(
             refuse_special(output)
         with _budget(file, timeout) as state:
             from gacli.pipeline import needs_of
-            derivation = _derive(file, state, needs=needs_of(format in CODE_FORMATS, reactions))
+            derivation = _derive(file, state, needs=needs_of(format in CODE_FORMATS, reactions, steps))
             state(f"writing the {format} output")
             if format == "text":
                 title, sections = _text_report(derivation, steps, reactions)

@@ -137,10 +137,10 @@ def steady(file: SystemPath, format_: _Format = "text", timeout: _Timeout = DEFA
     """
     from gacli.display import console
 
-    from gacli.pipeline import PRINTOUT  # a system too large to print is refused without its closed forms
+    from gacli.pipeline import STEPS  # a system too large to print is refused without its closed forms
 
     with _SHARED["boundary"](), _SHARED["budget"](file, timeout) as state:
-        derivation = _SHARED["derive"](file, state, PRINTOUT)
+        derivation = _SHARED["derive"](file, state, STEPS)
         state("solving for the steady motions")
         from gacli.steady.motions import steady_motions
         from gacli.steady.report import motions_text
@@ -162,10 +162,10 @@ def integrals(file: SystemPath, candidate: _Candidate = None, format_: _Format =
     """
     from gacli.display import console
 
-    from gacli.pipeline import PRINTOUT
+    from gacli.pipeline import STEPS
 
     with _SHARED["boundary"](), usage_errors_here(), _SHARED["budget"](file, timeout) as state:
-        derivation = _SHARED["derive"](file, state, PRINTOUT)
+        derivation = _SHARED["derive"](file, state, STEPS)
         from gacli.steady.integrals import parse_candidate
 
         expressions = [parse_candidate(derivation, text) for text in candidate or ()]

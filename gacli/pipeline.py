@@ -20,6 +20,8 @@ from gacli.budget import STEP_LOAD, STEP_READ
 from gacli.loader.loading import load_in_stages
 from gacli.mechanics.equations import Derivation, derive, derive_for_code
 from gacli.mechanics.program.record import program_operations
+from gacli.mechanics.read_off import read_off
+from gacli.display.report import prints_written_out
 from gacli.model import System
 from gacli.read.source import MAX_FILE_BYTES, SourceFile, parse_source, read_source
 
@@ -53,12 +55,15 @@ PROGRAM_ALONE = 800
 # What a command reads of the derivation, which decides how much of it is formed.
 CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, --reactions, linearize --symbolic, ...)
 CODE = "code"  # q̇, M and F as generated code computes them
-PRINTOUT = "printout"  # q̇, M and F as derive, gibbs and LaTeX print them, with the count of the rows
+PRINTOUT = "printout"  # q̇, M, F and Q as derive, gibbs and LaTeX print them, read off the program
+STEPS = "steps"  # the closed forms, unless the program is so large that a printout names its quantities
+# (--steps, steady, integrals)
 
 
-def needs_of(code: bool, reactions: bool) -> str:
-    """What ``derive`` reads: generated code or a printout, unless reactions ask for the closed forms."""
-    return CLOSED if reactions else CODE if code else PRINTOUT
+def needs_of(code: bool, reactions: bool, steps: bool = False) -> str:
+    """What ``derive`` reads: generated code or a printout, unless reactions ask for the closed
+    forms, or the worked solution for the steps that lead to them."""
+    return CLOSED if reactions else CODE if code else STEPS if steps else PRINTOUT
 
 
 def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None] | None = None,
@@ -67,10 +72,15 @@ def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None
 
     ``needs``: for CODE, a system the program builder takes is derived by the program alone
     (:func:`gacli.mechanics.equations.derive_for_code`): generated code computes it, and
-    neither the closed forms nor the rolling rows are formed. For PRINTOUT, so is a system
-    whose program has at least PROGRAM_ALONE operations: its printout names the program's
-    quantities (docs/printing.md); the rolling rows are added, for the count ℓ of the rows
-    it reports. ``loaded`` sees the System before it is derived (gacli check's notes on the
+    neither the closed forms nor the rolling rows are formed. For PRINTOUT, q̇, M, F and Q
+    are read off that program (:func:`gacli.mechanics.read_off.read_off`) and the closed
+    route is not run, where they print written out within the bound (docs/printing.md); where
+    they would not, the closed forms are formed as before, since inlined they can print far
+    longer (a tricycle's dependent accelerations: 18,637 characters for one entry of Q − F
+    that prints in 869 in closed form). For STEPS, the closed forms are formed. Either way, a
+    system whose program has at least PROGRAM_ALONE operations prints the program's named
+    quantities, and forms nothing. The rolling rows are added for either, for the count ℓ
+    of the rows it reports. ``loaded`` sees the System before it is derived (gacli check's notes on the
     declarations, kept if the derivation fails).
     """
     step = progress or (lambda name: None)
@@ -90,7 +100,10 @@ def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[s
     system = complete()
     if loaded is not None:
         loaded(system)
-    if needs == PRINTOUT and (program := derive_for_code(system)) is not None \
-            and program_operations(program.program) >= PROGRAM_ALONE:
-        return Run(source, system, program)
+    if needs in (PRINTOUT, STEPS) and (program := derive_for_code(system)) is not None:
+        if program_operations(program.program) >= PROGRAM_ALONE:
+            return Run(source, system, program)
+        if needs == PRINTOUT and (read := read_off(system, program.program)) is not None \
+                and prints_written_out(read):
+            return Run(source, system, read)
     return Run(source, system, derive(system, progress=step))

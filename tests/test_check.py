@@ -289,6 +289,7 @@ def test_a_crash_is_reported_as_an_internal_error(tmp_path, monkeypatch):
         raise ZeroDivisionError("boom")
 
     monkeypatch.setattr("gacli.pipeline.derive", broken)
+    monkeypatch.setattr("gacli.pipeline.read_off", broken)  # the printout's route, check's too
     result = invoke(str(write(tmp_path, "good.yaml", GOOD)))
     assert result.exit_code == 1
     assert "good.yaml:1:1: error: internal error in the step" in result.stderr

@@ -25,11 +25,14 @@ ROOT = TESTS.parent
 FILES = [ROOT / "systems" / "rolling_disk.yaml", ROOT / "systems" / "routh_sphere.yaml",
          ROOT / "systems" / "differential_drive.yaml", TESTS / "frames" / "car.yaml",
          TESTS / "frames" / "unbalanced_disk.yaml", TESTS / "twins" / "tricycle_front_drive.yaml",
-         TESTS / "twins" / "car_format1.yaml", TESTS / "twins" / "snakeboard.yaml"]
+         TESTS / "twins" / "car_format1.yaml", TESTS / "twins" / "snakeboard.yaml",
+         ROOT / "systems" / "spinning_top.yaml", ROOT / "systems" / "chaplygin_sleigh.yaml"]
 EQUATION = re.compile(r"^  dG/d\(ddot\((?P<name>[^)]+)\)\): (?P<lhs>.+) = (?P<rhs>[^=]+)$")
 RATE = re.compile(r"^  dot\((?P<name>[^)]+)\) = (?P<value>.+)$")
 # A printout too long to write out names its common subexpressions first (docs/printing.md).
-NAMED = re.compile(r"^  (?P<name>z\d+|[MF]_\d+(?:_\d+)?) = (?P<value>.+)$")
+# Its names: z1, z2, ... of code's CSE, or the program's physical ones (w_chassis_z), M_1_2 and F_1;
+# not G (written "+ ...") or Q_s, which a written-out printout gives as sections of their own.
+NAMED = re.compile(r"^  (?P<name>(?!G |Q_)[A-Za-z_]\w*) = (?P<value>[^=]+)$")
 # ... and its equations through the entries of M and F it printed: for ddot(q): Σ M_s_r ddot(u_r) = F_s.
 ENTRY_EQUATION = re.compile(r"^  for ddot\((?P<name>[^)]+)\): (?P<lhs>.+) = (?P<rhs>[^=]+)$")
 

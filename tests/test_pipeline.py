@@ -194,3 +194,18 @@ def test_code_and_numeric_linearization_never_form_the_closed_forms(monkeypatch,
     assert (tmp_path / f"{name}.c").exists()
     result = CliRunner().invoke(app, ["linearize", path, "--at", at])
     assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize("name", ["rolling_disk", "cylinder_in_cylinder", "appell_hamel", "spinning_top"])
+def test_the_printout_is_read_off_the_program(monkeypatch, name):
+    # One engine (issue #28): derive's text and LaTeX and gibbs print q̇, M, F and Q read off the
+    # program (gacli.mechanics.read_off); the chapter's closed route is not run for them.
+    import gacli.mechanics.equations as equations
+    from gacli.cli import app
+
+    monkeypatch.setattr(equations, "_derive", lambda *a, **k: (_ for _ in ()).throw(AssertionError("closed forms")))
+    path = str(SYSTEMS / f"{name}.yaml")
+    assert "Gibbs-Appell equations" in _derive(path)
+    assert "\\begin" in _derive(path, "--format", "latex")
+    result = CliRunner().invoke(app, ["gibbs", path])
+    assert result.exit_code == 0 and "G = " in result.output, result.output

@@ -41,9 +41,10 @@ def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
 
 
 def _equations(derivation: Derivation):
-    """M, F and q̇: the closed forms, or for a derivation by the program alone its outputs inlined
-    (expression graphs: walked by gacli.algebra.graph and evaluated numerically, never printed)."""
-    if derivation.closed:
+    """M, F and q̇: the closed forms or those read off the program, or for a derivation by the program
+    alone its outputs inlined (expression graphs: walked by gacli.algebra.graph and evaluated
+    numerically, never printed)."""
+    if derivation.printable:
         return derivation.mass_matrix, derivation.forcing, derivation.kinematic_equations
     code = derivation.code
     return code.dense_mass_matrix(), sp.ImmutableMatrix(code.forcing), code.kinematic_equations

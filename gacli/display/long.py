@@ -61,11 +61,11 @@ def named_of(d, header: int = 0) -> N.Named:
     if code.route == "program":
         from gacli.mechanics.code import program_for
 
-        named = N.from_program(d.program if not d.closed else program_for(d.system), taken)
+        named = N.from_program(d.program if d.program is not None else program_for(d.system), taken)
         sections = parts(d, named)
         if parts_length(sections) + len(sections) + header <= limit(d):  # a blank line before each
             return named
-    dependent = {}
+    dependent = dict(d.dependent_rates)
     if d.closed:
         dependent = {n: d.rates.rate(n) for n in d.rates.names if n not in d.independent}
     mass = [(key, e) for key, e in code.mass_matrix if key[0] <= key[1]]

@@ -72,8 +72,9 @@ def freedom(d: Derivation) -> Section:
 
 
 def rates(d: Derivation) -> Section:
-    lines = [f"{rate_name(n, 1)} = {show(printed.tidy(d.rates.rate(n)))}"
-             for n in d.rates.names if n not in d.independent]
+    dependent = ([(n, d.rates.rate(n)) for n in d.rates.names if n not in d.independent] if d.closed
+                 else d.dependent_rates)
+    lines = [f"{rate_name(n, 1)} = {show(printed.tidy(e))}" for n, e in dependent]
     return Section("Rates in terms of the independent rates, eq. (14.7)", tuple(lines) or ("(all rates are independent)",))
 
 
@@ -133,20 +134,34 @@ def kinematic(d: Derivation) -> Section:
                    tuple(lines) or ("(every coordinate is independent: its rate is one of the speeds)",))
 
 
+def written_length(d: Derivation, header: int) -> tuple[int, int] | None:
+    """(characters, longest line) of the equations written out, counted as the bound counts a
+    printout: the title and degrees of freedom above (``header``), a blank line before each section
+    (a sphere whose code shrank to 69 operations printed 2,152 for 2,000); None as soon as they
+    are known to print past :func:`gacli.display.long.limit`, or are too large to tidy."""
+    if not d.printable or not displayable(d) or not L.tidy_worth_trying(d):
+        return None
+    if printed.coefficients(d, L.limit(d)) is None:
+        return None
+    closed = written(d, header)
+    return header + L.printed_length(closed) + len(closed), L.longest_line(closed)
+
+
+def prints_written_out(d: Derivation) -> bool:
+    """Whether ``d``'s equations print written out, within the bound and the longest line."""
+    counted = written_length(d, _header(d, freedom(d)))
+    return counted is not None and counted[0] <= L.limit(d) and counted[1] <= L.LONGEST_LINE
+
+
 def long_form(d: Derivation):
     """The named form (:mod:`gacli.display.named`) when the equations written out would print
     past :func:`gacli.display.long.limit` or in a line past LONGEST_LINE, and it does better;
     None otherwise (docs/printing.md)."""
     header = _header(d, freedom(d))
-    if not d.closed or not displayable(d) or not L.tidy_worth_trying(d):
+    counted = written_length(d, header)
+    if counted is None:
         return L.named_of(d, header)
-    limit = L.limit(d)
-    if printed.coefficients(d, limit) is None:
-        return L.named_of(d, header)
-    closed = written(d, header)
-    # Counted as the bound counts a printout: the title and degrees of freedom above, a blank line
-    # before each section (a sphere whose code shrank to 69 operations printed 2,152 for 2,000).
-    length, longest = header + L.printed_length(closed) + len(closed), L.longest_line(closed)
+    limit, (length, longest) = L.limit(d), counted
     if length <= limit and longest <= L.LONGEST_LINE:
         return None
     named = L.named_of(d, header)

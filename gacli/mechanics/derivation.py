@@ -6,9 +6,11 @@ kinematic equations 14.20) when :func:`gacli.mechanics.equations.derive`
 formed them; for generated code alone
 (:func:`gacli.mechanics.equations.derive_for_code`) it holds the
 straight-line program instead, and the closed forms are left unformed
-(``closed`` is False). What generated code computes is
-:attr:`Derivation.code` either way: the program's equations wherever the
-builder takes the system (gacli.mechanics.code).
+(``closed`` is False); for a printout, the program and q̇, M, F and Q read
+off it (:func:`gacli.mechanics.read_off.read_off`: ``printable``, not
+``closed``). What generated code computes is :attr:`Derivation.code`
+either way: the program's equations wherever the builder takes the system
+(gacli.mechanics.code).
 """
 
 from __future__ import annotations
@@ -46,29 +48,37 @@ class Derivation(StateNames):
     kinematic_equations: tuple[tuple[str, sp.Expr], ...] = ()
     # r̈ = β u̇ + γ for each dependent rate (eq. 14.14), as the motions used them.
     dependent_accelerations: tuple[tuple[str, sp.Expr], ...] = ()
-    # The straight-line program, for a derivation for generated code alone.
+    # The straight-line program, for a derivation for generated code or read off it.
     program: Program | None = None
+    # Each rate that is not a speed, in the speeds (eq. 14.7), for one read off the program.
+    dependent_rates: tuple[tuple[str, sp.Expr], ...] = ()
 
     def __repr__(self) -> str:
         # One line: the dataclass repr would print every matrix. The notebook's typeset face
         # (_repr_latex_) is given by gacli.notebook, which this stage must not import.
         s, k = self.system, self.k
-        if not self.closed:
+        if not self.printable:
             return f"<Derivation of {s.name!r} for code: k = {k}, {self.code.operations:,} operations>"
         return (f"<Derivation of {s.name!r}: k = {k}, coordinates {', '.join(c.name for c in s.coordinates)}; "
                 f"speeds {', '.join(str(u) for u in self.speeds)}; M {k}x{k}, F {k}x1>")
 
     @property
     def closed(self) -> bool:
-        """Whether the closed forms were formed (False: a derivation for generated code alone)."""
+        """Whether the chapter's closed route formed β, the motions and G (False: a derivation for
+        generated code alone, or read off the program)."""
         return self.rates is not None
+
+    @property
+    def printable(self) -> bool:
+        """Whether q̇, M, F and Q are here as expressions, formed by the closed route or read off the program."""
+        return self.mass_matrix is not None
 
     @functools.cached_property
     def code(self) -> CodeEquations:
         """q̇, M and F as generated code computes them (:mod:`gacli.mechanics.code`): the
         straight-line program's, or these closed forms where there is no program in the same speeds."""
         names = tuple(c.name for c in self.system.coordinates)
-        if not self.closed:
+        if not self.closed:  # the program's, or read off it
             return from_program(self.program, names)
         program = program_for(self.system)
         if program is not None and program.independent != self.independent:
