@@ -49,3 +49,32 @@ def test_an_inertia_no_body_has_or_that_cannot_be_carried_is_a_located_error(old
     with pytest.raises(SystemFileError) as caught:
         loads(text.replace(old, new))
     assert message in str(caught.value) and caught.value.diagnostics[0].location.line > 1
+
+
+QUATERNION_TOP = """
+gacli: 1
+name: quaternion_top_about
+parameters: [m, g, l, A0, B0, C]
+coordinates: [q0, q1, q2, q3]
+quasi_coordinates: [w1, w2, w3]
+independent: [w1, w2, w3]
+frames:
+  top: {quaternion: [q0, q1, q2, q3], rates: [w1, w2, w3]}
+  cad: {parent: top, rotations: [[z, pi/2]]}
+points:
+  pivot: {N: [0, 0, 0]}
+  G: {from: pivot, top: [0, 0, l]}
+bodies:
+  top: {mass: m, position: G, frame: top, inertia: [B0, A0, C], inertia_about: pivot, inertia_in: cad}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: G}
+"""
+
+
+def test_a_quaternion_frame_body_takes_its_inertia_about_a_point_and_in_a_frame_fixed_in_it():
+    # Its turns are homogeneous quadratics in e: C_Bᵀ C_B is (e·e)² E, the identity on the unit
+    # sphere, and the loader reduces by it (it refused both as "moves" and "turns" before).
+    m_, l_, A0, B0 = sp.symbols("m l A0 B0", real=True)
+    (top,) = loads(QUATERNION_TOP).bodies
+    expected = sp.diag(A0 - m_ * l_ ** 2, B0 - m_ * l_ ** 2, C)
+    assert sp.simplify(top.inertia - expected) == sp.zeros(3)
