@@ -449,3 +449,28 @@ def test_an_unknown_structure_is_undecided_with_a_note_that_never_fails(tmp_path
     notes = [d for d in report["diagnostics"] if d["severity"] == "note"]
     assert [(d["where"], d["line"]) for d in notes] == [("constraints[0]", 6)]
     assert "dq_y: in no body's rotation" in notes[0]["message"]
+
+
+def test_a_quaternion_frame_without_rates_is_warned_of_where_it_is_declared(tmp_path):
+    # Its automatic speeds are three Euler parameters' rates, and the fourth divides by a parameter:
+    # the generated rhs raised ZeroDivisionError at the identity attitude, and check said nothing.
+    text = """gacli: 1
+name: quaternion_without_rates
+parameters: [m, g, A, B, C]
+coordinates: [x, y, z, q0, q1, q2, q3]
+frames:
+  body: {quaternion: [q0, q1, q2, q3]}
+bodies:
+  body: {mass: m, position: [x, y, z], frame: body, inertia: [A, B, C]}
+loads:
+  - {force: [0, 0, -m*g], at: body}
+"""
+    path = str(write(tmp_path, "q.yaml", text))
+    result = invoke(path)
+    assert result.exit_code == 0
+    assert re.search(r"q\.yaml:4:\d+: warning: frames\.body: frame 'body' is turned by the quaternion \(q0, q1, q2, q3\) "
+                     r"without body rates", result.stderr), result.stderr
+    assert invoke(path, "--strict").exit_code == 1
+    with_rates = text.replace("[q0, q1, q2, q3]}", "[q0, q1, q2, q3], rates: [w1, w2, w3]}").replace(
+        "coordinates: [x, y, z, q0, q1, q2, q3]", "coordinates: [x, y, z, q0, q1, q2, q3]\nquasi_coordinates: [w1, w2, w3]")
+    assert "without body rates" not in invoke(str(write(tmp_path, "r.yaml", with_rates))).stderr

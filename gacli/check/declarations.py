@@ -32,6 +32,25 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     for c in system.coordinates:
         if c.name not in bodies:
             out.append(_warning(c.location, f"coordinates.{c.name}", _moves_nothing(system, c.name)))
+    return out + _quaternions_without_rates(system)
+
+
+def _quaternions_without_rates(system: System) -> list[Diagnostic]:
+    """A quaternion frame without ``rates``: three of its Euler parameters' rates are speeds, and the
+    fourth is solved from the unit norm, e·ė = 0, dividing by that parameter: generated code divides
+    by zero at an ordinary attitude (the identity, for e3). Said at the frame's first parameter."""
+    out = []
+    coordinates = {c.name: c for c in system.coordinates}
+    for edge in (system.frames.edges if system.frames is not None else ()):
+        if edge.quaternion is None or edge.rates:
+            continue
+        first = coordinates.get(str(edge.quaternion[0]))
+        names = ", ".join(str(e) for e in edge.quaternion)
+        out.append(_warning(first.location if first else system.location, f"frames.{edge.name}",
+                            f"frame '{edge.name}' is turned by the quaternion ({names}) without body rates: one "
+                            "Euler parameter's rate is solved from the unit norm by dividing by a parameter, so "
+                            "the equations are singular where it is zero (an ordinary attitude); give the frame "
+                            "'rates: [w_1, w_2, w_3]', three quasi-coordinates (docs/frames.md)"))
     return out
 
 
