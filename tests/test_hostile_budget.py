@@ -86,6 +86,7 @@ def test_out_of_memory_in_a_step_is_one_located_message(monkeypatch):
         raise MemoryError
 
     monkeypatch.setattr("gacli.pipeline.derive", exhausted)
+    monkeypatch.setattr("gacli.pipeline.read_off", exhausted)  # the printout's route
     path = ROOT / "systems" / "particle_in_plane.yaml"
     assert_located_error(run("derive", path), path, "ran out of memory in the step 'loading the declarations")
 
