@@ -231,6 +231,8 @@ def random_state(derivation, reference, rng) -> dict:
     spread = reference.spread
     parameters = {p.name: float(rng.uniform(0.5, 1.5)) for p in derivation.system.parameters}
     parameters.update(parameter_defaults(derivation.system.parameters))
+    # Inputs are values too (a motor torque): random, under the same names on Kane's side.
+    parameters.update({i.name: float(rng.uniform(-1.0, 1.0)) for i in derivation.system.inputs})
     names = {c.name: float(rng.uniform(-spread, spread)) for c in derivation.system.coordinates}
     names.update(_configuration(reference, names, parameters))
     speeds = [float(rng.uniform(-1.0, 1.0)) for _ in derivation.speeds]
@@ -254,7 +256,9 @@ def _configuration(reference, names: dict, parameters: dict) -> dict:
     fixed.update({s: parameters[n] for n, s in reference.model.parameters.items() if n in parameters})
     exprs = [sp.sympify(c).xreplace(plain).xreplace(fixed) for c in reference.configuration]
     f = sp.lambdify([unknown], exprs, modules="numpy")
-    guess = [reference.guess.get(reference.coordinates[q], names[reference.coordinates[q]]) for q in reference.q_dep]
+    # A coordinate of Kane's model alone (a slider's x the file places by its loop) starts at its guess, or 0.
+    guess = [reference.guess.get(reference.coordinates[q], names.get(reference.coordinates[q], 0.0))
+             for q in reference.q_dep]
     solution, _, ok, message = fsolve(lambda v: np.array(f(list(v)), dtype=float), guess, full_output=True)
     if ok != 1:
         raise RuntimeError(f"holonomic constraints not met at a random state: {message}")
@@ -335,8 +339,8 @@ def run_worker(name: str, options, code_only: bool) -> dict:
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(scratch) / "result.json"
         argv = [sys.executable, __file__, "--worker", name, "--result", str(out), "--seed", str(options.seed)]
-        if options.extra is not None:
-            argv += ["--extra", str(options.extra.resolve())]
+        for path in options.extra:
+            argv += ["--extra", str(path.resolve())]
         run = child_run([*argv, "--code-only"] if code_only else argv, options.timeout)
         data = json.loads(out.read_text(encoding="utf-8")) if out.exists() else {"stage": "start"}
     data["cpu_s"], data["timeout"] = run["cpu_s"], bool(run.get("timeout"))
@@ -432,29 +436,41 @@ def parse(argv):
     parser.add_argument("--seed", type=int, default=20261126, help="the random states")
     parser.add_argument("--json", type=Path, help="also save every number here")
     parser.add_argument("--from-json", type=Path, help="print the table of a saved run instead of running")
-    parser.add_argument("--extra", type=Path, help="a Python file whose SYSTEMS (as in kane_set/models.py) join the set")
+    parser.add_argument("--extra", type=Path, action="append", default=[],
+                        help="a Python file whose SYSTEMS (as in kane_set/models.py) join the set (repeatable)")
+    parser.add_argument("--variants", action="store_true",
+                        help="the variants written as new users would (kane_set/variants/*/models_*.py) instead of "
+                             "the set; with --only, any of both")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     parser.add_argument("--result", type=Path, help=argparse.SUPPRESS)
     parser.add_argument("--code-only", action="store_true", help=argparse.SUPPRESS)
     return parser.parse_args(argv)
 
 
-def _join_extra(path: Path | None) -> None:
-    """Add the systems of a file written beside the set (a variant tried before it joins models.py)."""
-    if path is None:
-        return
+_BASE: set = set()  # the set's own systems, before any variants join it
+VARIANTS = sorted((HERE / "kane_set" / "variants").glob("*/models_*.py"))
+
+
+def _join_extra(paths: list[Path]) -> None:
+    """Add the systems of files written beside the set (the variants, or one tried by hand)."""
     import importlib.util
 
     import models
 
-    spec = importlib.util.spec_from_file_location("kane_set_extra", path)
-    extra = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(extra)
-    models.SYSTEMS.update(extra.SYSTEMS)
+    for path in paths:
+        spec = importlib.util.spec_from_file_location(f"kane_set_{path.stem}", path)
+        extra = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(extra)
+        models.SYSTEMS.update(extra.SYSTEMS)
 
 
 def main(argv=None) -> int:
     options = parse(argv)
+    from models import SYSTEMS as base
+
+    _BASE.update(base)
+    if options.variants:
+        options.extra = [*VARIANTS, *options.extra]
     _join_extra(options.extra)
     if options.worker:
         worker(options.worker, options.result, options.code_only, options.seed)
@@ -466,7 +482,7 @@ def main(argv=None) -> int:
     from bench_report import machine
     from models import SYSTEMS
 
-    names = options.only.split(",") if options.only else list(SYSTEMS)
+    names = options.only.split(",") if options.only else [n for n in SYSTEMS if n not in _BASE or not options.variants]
     unknown = sorted(set(names) - set(SYSTEMS))
     if unknown:
         print(f"unknown system(s) {', '.join(unknown)}; the set: {', '.join(SYSTEMS)}", file=sys.stderr)
