@@ -44,10 +44,16 @@ CSE_TREES = 300_000
 def trees_within(exprs: Iterable[sp.Basic], limit: int = CSE_TREES) -> bool:
     """Whether the expressions have at most ``limit`` nodes as trees together, counted over the
     graph (each distinct subexpression's tree size once: a bicycle's millions cost its thousands)."""
+    return tree_nodes(exprs) <= limit
+
+
+def tree_nodes(exprs: Iterable[sp.Basic]) -> int:
+    """The expressions' nodes as trees together, counted over the graph (see :func:`trees_within`)."""
+    exprs = list(exprs)
     size: dict[sp.Basic, int] = {}
     for node in postorder(exprs):
         size[node] = 1 + sum(size[a] for a in node.args)
-    return sum(size[e] for e in exprs) <= limit
+    return sum(size[e] for e in exprs)
 
 
 def common_subexpressions(exprs: Sequence[sp.Basic], symbols: Iterator[sp.Symbol]
