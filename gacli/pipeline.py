@@ -58,7 +58,7 @@ CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, 
 CODE = "code"  # q̇, M and F as generated code computes them
 PRINTOUT = "printout"  # q̇, M, F and Q as derive, gibbs and LaTeX print them, read off the program
 STEPS = "steps"  # the closed forms, unless the program is so large that a printout names its quantities
-# (--steps, steady, integrals)
+# (--steps, steady, integrals, check)
 
 
 def needs_of(code: bool, reactions: bool, steps: bool = False) -> str:
