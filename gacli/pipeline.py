@@ -105,7 +105,9 @@ def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[s
         if program_operations(program.program) >= PROGRAM_ALONE:
             return Run(source, system, program)
         if needs == PRINTOUT and (read := read_off(system, program.program)) is not None:
-            return Run(source, system, read if prints_written_out(read) else _printout(read, derive(system, progress=step)))
+            if prints_written_out(read):
+                return Run(source, system, read)
+            return Run(source, system, _printout(read, derive(system, progress=step)))
     return Run(source, system, derive(system, progress=step))
 
 
