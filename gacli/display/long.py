@@ -16,6 +16,7 @@ import sympy as sp
 from gacli.algebra.readable import show
 from gacli.algebra.symbols import rate_name
 from gacli.display import named as N
+from gacli.display import printed
 
 # The bound: at most this many characters per operation of the generated rhs.
 CHARS_PER_OPERATION = 25
@@ -65,7 +66,9 @@ def named_of(d, header: int = 0) -> N.Named:
         sections = parts(d, named)
         if parts_length(sections) + len(sections) + header <= limit(d):  # a blank line before each
             return named
-    dependent = dict(d.dependent_rates)
+    # Read off the program, a dependent rate is its solve inlined: tidied as the written-out
+    # printout's rates section tidies it (an Ackermann car's named printout: 3,108 → 2,863 characters).
+    dependent = {n: printed.tidy(e) for n, e in d.dependent_rates}
     if d.closed:
         dependent = {n: d.rates.rate(n) for n in d.rates.names if n not in d.independent}
     mass = [(key, e) for key, e in code.mass_matrix if key[0] <= key[1]]
