@@ -24,7 +24,7 @@ from gacli.model import System
 def read_off(system: System, program: Program) -> Derivation | None:
     """The printout's derivation from ``program``; None where the program keeps no Q, a dependent
     rate is not one the program gives, or the inlined forms are past what SymPy's cse takes as
-    trees (the printout then names the program's quantities, gacli.display.named)."""
+    trees (the pipeline then forms the closed forms, as it did for every printout before)."""
     inlined = inline_with_forces(program)
     if inlined is None or not trees_within([e for part in inlined for e in part]):
         return None
