@@ -22,6 +22,7 @@ from gacli.loader.loading import load_in_stages
 from gacli.mechanics.equations import Derivation, derive, derive_for_code
 from gacli.mechanics.program.record import program_operations
 from gacli.mechanics.read_off import read_off
+from gacli.display.long import printed_expressions
 from gacli.display.report import prints_written_out
 from gacli.model import System
 from gacli.read.source import MAX_FILE_BYTES, SourceFile, parse_source, read_source
@@ -117,9 +118,4 @@ def _printout(read: Derivation, closed: Derivation) -> Derivation:
     program's quantities as the closed one's would, without tidying the closed forms only to find
     them too long (an Ackermann car's 5.7 s). Of the 40 such files of bench_text_derive, the 6 whose
     closed forms print written out have at most 0.91 of the read-off forms' nodes; none at 1 or more does."""
-    return closed if _nodes(closed) < _nodes(read) else read
-
-
-def _nodes(d: Derivation) -> int:
-    return tree_nodes([*(e for (i, j), e in d.mass_matrix.todok().items() if j >= i), *d.forcing,
-                       *d.generalized_forces])
+    return closed if tree_nodes(printed_expressions(closed)) < tree_nodes(printed_expressions(read)) else read

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from gacli.algebra.graph import trees_within
 from gacli.algebra.readable import show
 from gacli.algebra.symbols import rate_name
 from gacli.display import named as N
@@ -35,15 +36,14 @@ LONGEST_LINE = 2_000
 TIDIED_NODES = 10_000
 
 
+def printed_expressions(d) -> list[sp.Expr]:
+    """What a printout tidies: M (r ≤ s, M being symmetric), F and Q."""
+    return [*(e for (i, j), e in d.mass_matrix.todok().items() if j >= i), *d.forcing, *d.generalized_forces]
+
+
 def tidy_worth_trying(d) -> bool:
     """Whether M (r ≤ s), F and Q have at most TIDIED_NODES nodes as trees together."""
-    exprs = [e for (i, j), e in d.mass_matrix.todok().items() if j >= i]
-    count = 0
-    for e in (*exprs, *d.forcing, *d.generalized_forces):
-        for count, _ in enumerate(sp.preorder_traversal(e), start=count + 1):
-            if count > TIDIED_NODES:
-                return False
-    return True
+    return trees_within(printed_expressions(d), TIDIED_NODES)
 
 
 def limit(d) -> int:
@@ -68,9 +68,7 @@ def named_of(d, header: int = 0) -> N.Named:
             return named
     # Read off the program, a dependent rate is its solve inlined: tidied as the written-out
     # printout's rates section tidies it (an Ackermann car's named printout: 3,108 → 2,863 characters).
-    dependent = {n: printed.tidy(e) for n, e in d.dependent_rates}
-    if d.closed:
-        dependent = {n: d.rates.rate(n) for n in d.rates.names if n not in d.independent}
+    dependent = {n: e if d.closed else printed.tidy(e) for n, e in d.dependent_rates}
     mass = [(key, e) for key, e in code.mass_matrix if key[0] <= key[1]]
     return N.from_closed(code.kinematic_equations, mass, code.forcing, dependent, taken)
 

@@ -38,10 +38,9 @@ class Coefficients:
     forces: tuple[sp.Expr, ...]
 
 
-# One derivation's coefficients kept while it is the one being printed (text and LaTeX of one command).
+# One derivation's coefficients kept while it is the one being printed (text and LaTeX of one command):
+# [derivation, coefficients, the characters they print], or [derivation, None, a limit they printed past].
 _LAST: list = []
-# The last derivation whose coefficients printed past a limit, and that limit.
-_OVER: list = []
 
 
 def coefficients(d: Derivation, limit: int | None = None) -> Coefficients | None:
@@ -49,9 +48,11 @@ def coefficients(d: Derivation, limit: int | None = None) -> Coefficients | None
     they print in more than ``limit`` characters (M's off-diagonal entries counted twice, as the
     equations print them), so that a long system is not tidied in full only to be named instead."""
     if _LAST and _LAST[0] is d:
-        return _LAST[1] if limit is None or _LAST[2] <= limit else None
-    if _OVER and _OVER[0] is d and limit is not None and limit <= _OVER[1]:
-        return None  # past this limit already: the pipeline asks, then the report asks again
+        _, known, chars = _LAST
+        if known is not None:
+            return known if limit is None or chars <= limit else None
+        if limit is not None and limit <= chars:
+            return None  # past this limit already: the pipeline asks, then the report asks again
     # The nonzero entries only, each once: tidying every entry of a row made this ~k² per row.
     # One budget for all of them (readable.STEP_BUDGET_OPS operations handed to simplify), in a
     # fixed order: a large system's coefficients past it are shown as derived, and what a
@@ -62,7 +63,7 @@ def coefficients(d: Derivation, limit: int | None = None) -> Coefficients | None
         if j >= i and e != 0:
             mass[(i, j)] = tally(budgeted(e), 1 if i == j else 2)
             if tally.over:
-                _OVER[:] = [d, limit]
+                _LAST[:] = [d, None, limit]
                 return None
     mass.update({(j, i): e for (i, j), e in list(mass.items())})
     # In this order, rest then forces, as ever: the budget decides which are tidied.
@@ -71,7 +72,7 @@ def coefficients(d: Derivation, limit: int | None = None) -> Coefficients | None
         for e in exprs:
             out.append(tally(budgeted(e)))
             if tally.over:
-                _OVER[:] = [d, limit]
+                _LAST[:] = [d, None, limit]
                 return None
     c = Coefficients(mass, tuple(rest), tuple(forces))
     _LAST[:] = [d, c, tally.chars]

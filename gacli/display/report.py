@@ -72,9 +72,7 @@ def freedom(d: Derivation) -> Section:
 
 
 def rates(d: Derivation) -> Section:
-    dependent = ([(n, d.rates.rate(n)) for n in d.rates.names if n not in d.independent] if d.closed
-                 else d.dependent_rates)
-    lines = [f"{rate_name(n, 1)} = {show(printed.tidy(e))}" for n, e in dependent]
+    lines = [f"{rate_name(n, 1)} = {show(printed.tidy(e))}" for n, e in d.dependent_rates]
     return Section("Rates in terms of the independent rates, eq. (14.7)", tuple(lines) or ("(all rates are independent)",))
 
 

@@ -50,7 +50,8 @@ class Derivation(StateNames):
     dependent_accelerations: tuple[tuple[str, sp.Expr], ...] = ()
     # The straight-line program, for a derivation for generated code or read off it.
     program: Program | None = None
-    # Each rate that is not a speed, in the speeds (eq. 14.7), for one read off the program.
+    # Each rate that is not a speed, in the speeds (eq. 14.7): β u + β₀ of the closed route, or
+    # read off the program (gacli.mechanics.read_off); none for a derivation for code alone.
     dependent_rates: tuple[tuple[str, sp.Expr], ...] = ()
 
     def __repr__(self) -> str:
