@@ -21,6 +21,7 @@ from scipy.integrate import solve_ivp
 from conftest import SYSTEMS, derived, evaluate
 from gacli.algebra import symbols as S
 from gacli.emit.naming import layout
+from gacli.mechanics.spheres import spheres
 from test_emit_c import COMPILERS, CLibrary, compile_c
 from test_emit_python import EXTRA, extra, write_python
 
@@ -46,13 +47,12 @@ def random_states(d, seed):
     """
     lay = layout(d)
     rng = np.random.default_rng(seed)
-    # The two routes to a quaternion frame's equations agree on its unit sphere, where they hold.
-    spheres = [[lay.state.index(str(e)) for e in edge.quaternion] for edge in
-               (d.system.frames.edges if d.system.frames is not None else ()) if edge.quaternion is not None]
+    # The two routes to Euler parameters' equations agree on their unit sphere, where they hold.
+    on = [([lay.state.index(str(e)) for e in s.symbols], float(s.radius2)) for s in spheres(d.system)]
     for _ in range(STATES):
         x = rng.uniform(0.3, 1.2, len(lay.state))
-        for i in spheres:
-            x[i] /= np.linalg.norm(x[i])
+        for i, radius2 in on:
+            x[i] *= np.sqrt(radius2) / np.linalg.norm(x[i])
         yield (rng.uniform(0.3, 1.2), x, rng.uniform(0.3, 1.2, len(lay.parameters)), rng.uniform(0.3, 1.2, len(lay.r)))
 
 

@@ -22,6 +22,7 @@ from gacli.algebra.graph import free_symbols
 from gacli.loader.loading import load, loads
 from gacli.mechanics.equations import derive
 from gacli.mechanics.program import Program, build_program, inline, unsupported
+from gacli.mechanics.spheres import spheres
 from gacli.numeric import Program as Evaluator
 from gacli.numeric.parameters import parameter_values
 from gacli.read.reader import IDENTIFIER
@@ -57,10 +58,9 @@ def _states(system, speeds, count: int = 3, seed: int = 20261122) -> list[dict]:
     for _ in range(count):
         values = {S.value(p.name): known.get(S.value(p.name), rng.uniform(0.5, 1.5)) for p in system.parameters}
         values.update({S.value(c.name): rng.uniform(-0.5, 0.5) for c in system.coordinates})
-        for edge in (system.frames.edges if system.frames is not None else ()):
-            if edge.quaternion is not None:  # the two routes agree on the unit sphere, where the equations hold
-                e = np.array([values[x] for x in edge.quaternion])
-                values.update(zip(edge.quaternion, e / np.linalg.norm(e)))
+        for sphere in spheres(system):  # the two routes agree on the unit sphere, where the equations hold
+            e = np.array([values[x] for x in sphere.symbols])
+            values.update(zip(sphere.symbols, e * np.sqrt(float(sphere.radius2)) / np.linalg.norm(e)))
         values.update({u: rng.uniform(-1.0, 1.0) for u in speeds})
         values.update({S.value(i.name): rng.uniform(-1.0, 1.0) for i in system.inputs})
         values.update({S.rate(f.name, order): rng.uniform(-1.0, 1.0) for f in system.free_functions

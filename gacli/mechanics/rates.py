@@ -24,6 +24,7 @@ from gacli.errors import Diagnostic, SystemFileError
 from gacli.algebra.graph import is_small
 from gacli.algebra.matrices import nonzero, rank, solve_linear
 from gacli.model import Form, System
+from gacli.mechanics.spheres import on_spheres
 from gacli.numeric.samples import SEED, random_point
 
 
@@ -194,7 +195,7 @@ def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
     if A.rows == 0:
         return np.zeros((0, A.cols))
     for attempt in range(5):
-        point = on_unit_quaternions(random_point(A.free_symbols, SEED + attempt), system)
+        point = on_spheres(random_point(A.free_symbols, SEED + attempt), system)
         try:
             values = np.array(A.xreplace(point).evalf(20).tolist(), dtype=complex)
         except (TypeError, ValueError, ArithmeticError):
@@ -204,17 +205,6 @@ def _numeric(A: sp.Matrix, system: System) -> np.ndarray:
     raise _error(system, system.location, "",
                  "the coefficients of the constraints and quasi-coordinates cannot be evaluated "
                  "to finite numbers at generic points")
-
-
-def on_unit_quaternions(point: dict, system: System) -> dict:
-    """``point`` with each frame's Euler parameters scaled onto the unit sphere, where the rows hold:
-    a ball in a quaternion frame has a rolling row along the normal that vanishes only there (its
-    centre's height is r whatever the attitude), and counted off it, it took a degree of freedom."""
-    for edge in (system.frames.edges if system.frames is not None else ()):
-        if edge.quaternion is not None and all(e in point for e in edge.quaternion):
-            norm = sp.sqrt(sum(point[e] ** 2 for e in edge.quaternion))
-            point.update({e: sp.Float(point[e] / norm, 20) for e in edge.quaternion})
-    return point
 
 
 def _check_rank(system: System, rows, numeric: np.ndarray) -> None:
