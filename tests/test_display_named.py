@@ -22,6 +22,7 @@ from gacli.algebra.graph import free_symbols
 from gacli.display.named import identifier, label_name, point_words
 from gacli.display.report import derivation_report, long_form
 from gacli.numeric import Program
+from gacli.mechanics.spheres import spheres
 from gacli.pipeline import run
 from gacli.read.expr.build import Scope, build
 from gacli.read.expr.parser import parse
@@ -41,6 +42,9 @@ def _point(d, rng) -> dict[sp.Symbol, float]:
     # Angles and lengths alike in (0.3, 1.2): away from the bicycle's singular upright-and-straight pose.
     symbols = sorted(free_symbols(exprs) | set(d.speeds), key=lambda s: s.name)
     point = {s: rng.uniform(0.3, 1.2) for s in symbols}
+    for sphere in spheres(d.system):  # the printout and the closed forms agree there, where the motion is
+        norm = sum(point[x] ** 2 for x in sphere.symbols) ** 0.5 / float(sphere.radius2) ** 0.5
+        point.update({x: point[x] / norm for x in sphere.symbols})
     # A rate that is not a speed takes the value its kinematic equation gives it (F may hold it).
     kinematic = [(q, e) for q, e in d.kinematic_equations if e != S.rate(q)]
     for (q, _), value in zip(kinematic, Program([e for _, e in kinematic])(point)):
