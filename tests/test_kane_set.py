@@ -57,8 +57,10 @@ def test_generated_code_agrees_with_kane_and_costs_no_more(name):
 # or served with the longer closed forms, until it was fixed: a wall spring of length |x + d|, a ball in
 # a quaternion frame with an offset centre, a quaternion top's inertia given about its pivot, Euler
 # parameters written out by hand (a gyrostat's offset wheels, a thruster off the centre), whose
-# polynomials e·e = 1 shortens only when code reads them on the file's own constraint.
-VARIANTS = ["cart_chain3_springs", "ball_quaternion", "qtop_about", "gyrostat_quat_f1", "free_quat_loads_f1"]
+# polynomials e·e = 1 shortens only when code reads them on the file's own constraint, a chain of
+# relative angles written out (its angle sums read as frames).
+VARIANTS = ["cart_chain3_springs", "ball_quaternion", "qtop_about", "gyrostat_quat_f1", "free_quat_loads_f1",
+            "chain4_format1"]
 
 
 @pytest.mark.parametrize("name", VARIANTS)

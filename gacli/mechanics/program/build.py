@@ -26,6 +26,7 @@ from gacli.mechanics.program.forms import TURNINGS, FormRows, form_rows, rates_h
 from gacli.mechanics.program.frames import FrameTree
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
+from gacli.mechanics.program.planar import planar_frames
 from gacli.mechanics.program.record import Program, cost, finish
 from gacli.mechanics.program.solve import Solver
 from gacli.mechanics.program.support import Unsupported
@@ -94,11 +95,21 @@ def program_of(system: System) -> Program:
         if built[0] is None:
             break
         programs += built
+    planar = planar_frames(system)
+    if planar is not None:  # a planar chain written out, read as the frames its angle sums turn
+        programs += [p for p in _framed(replace(system, frames=planar), independent) if p is not None]
     if _spheres_above(system):
         programs.append(_program(system, independent, None, False, above=True))
     if form_rows(system).forms:  # rows stated in N's axes may turn with a vehicle's heading
         programs += [p for g in grams if (p := _program(system, independent, None, g, columns=True)) is not None]
     return programs[0] if len(programs) == 1 else min(programs, key=cost)
+
+
+def _framed(system: System, independent: tuple[str, ...]) -> list[Program | None]:
+    try:
+        return [_program(system, independent, None, False)]
+    except Unsupported:
+        return []
 
 
 def _spheres_above(system: System) -> bool:
