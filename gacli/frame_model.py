@@ -107,6 +107,17 @@ class Load:
 
 
 @dataclass(frozen=True)
+class Line:
+    """A linear spring (``stiffness``, free ``length``) or damper (``damping``) between two point
+    links ``ends``: a force along the line between them, of tension k (ℓ − L) + c ℓ̇."""
+
+    ends: tuple[str, str]
+    stiffness: sp.Expr | None = None
+    length: sp.Expr = sp.S.Zero
+    damping: sp.Expr | None = None
+
+
+@dataclass(frozen=True)
 class KnifeEdge:
     """The velocity of ``point`` has no component along ``along`` (a velocity constraint)."""
 
@@ -125,3 +136,8 @@ class FrameModel:
     rolling: tuple[RollingContact, ...]
     loads: tuple[Load, ...]
     knife_edges: tuple[KnifeEdge, ...] = ()
+    # Springs and dampers as lines between points, with the file's own potential and work without
+    # them (the System's potential and work hold the lines too, gacli.loader.lines).
+    lines: tuple[Line, ...] = ()
+    potential: sp.Expr = sp.S.Zero
+    work: object = None  # gacli.model.Form | None

@@ -30,6 +30,7 @@ from gacli.read.reader import IDENTIFIER
 ROOT = Path(__file__).resolve().parent.parent
 BICYCLE = ROOT / "systems" / "whipple_bicycle.yaml"
 FIXTURES = sorted([*ROOT.glob("systems/*.yaml"), *ROOT.glob("tests/frames/*.yaml"), *ROOT.glob("tests/twins/*.yaml"),
+                   *ROOT.glob("tests/lines/*.yaml"),
                    *ROOT.glob("benchmarks/corpus/*.yaml")])
 # The fixtures the builder refuses today: one that stops being taken fails here, not silently.
 REFUSED: set[str] = set()

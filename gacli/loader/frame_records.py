@@ -9,6 +9,8 @@ No geometry is done here: the cost is a walk of the declarations.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy as sp
 
 from gacli.frame_model import (INERTIAL, BodyPlacement, FrameEdge, FrameModel, FrameVector, KnifeEdge, Load,
@@ -21,8 +23,10 @@ _ZERO3 = (sp.S.Zero, sp.S.Zero, sp.S.Zero)
 
 
 def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
-                owners: dict[str, str] | None = None) -> FrameModel:
-    """The records of ``decl``'s frames, points, bodies, rolling contacts and loads (a loaded file: no errors)."""
+                owners: dict[str, str] | None = None, lines: tuple = ((), sp.S.Zero, None)) -> FrameModel:
+    """The records of ``decl``'s frames, points, bodies, rolling contacts and loads (a loaded file: no
+    errors); ``lines``: (the springs and dampers between their ends' names, the file's own potential
+    and work without them)."""
     links: list[PointLink] = []
     edges, origins = _edges(decl, parsed, links)
     for point in decl.points:
@@ -40,7 +44,10 @@ def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
                    if ld.reaction is not None)
     knives = tuple(KnifeEdge(c.point.text, _vector(c.along, parsed, INERTIAL)) for c in decl.constraints
                    if isinstance(c, VelocityConstraintDecl))
-    return FrameModel(tuple(edges), tuple(origins), tuple(links), placements, rolling, loads, knives)
+    between, potential, work = lines
+    between = tuple(replace(line, ends=tuple(centres.get(e, e) for e in line.ends)) for line in between)
+    return FrameModel(tuple(edges), tuple(origins), tuple(links), placements, rolling, loads, knives,
+                      between, potential, work)
 
 
 def _edges(decl: SystemDecl, parsed: dict, links: list[PointLink]) -> tuple[list[FrameEdge], list]:

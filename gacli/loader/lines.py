@@ -16,6 +16,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
+from gacli.frame_model import Line
 from gacli.model import Body, Form
 from gacli.numeric.zero import decide_zero
 from gacli.read.schema import LoadDecl
@@ -24,16 +25,17 @@ from gacli.read.schema import LoadDecl
 class Lines:
     """Springs and dampers, for the loader's builder (a mixin, as Geometry and RollingContacts)."""
 
-    def _line_loads(self, bodies: tuple[Body, ...]) -> tuple[sp.Expr, Form | None]:
-        """(the springs' potential, the dampers' work form or None)."""
+    def _line_loads(self, bodies: tuple[Body, ...]) -> tuple[sp.Expr, Form | None, tuple[Line, ...]]:
+        """(the springs' potential, the dampers' work form or None, the lines between their ends' names)."""
         by_name = {b.name: b for b in bodies}
-        potential, work = sp.S.Zero, None
+        potential, work, lines = sp.S.Zero, None, []
         for load in self.decl.loads:
             if load.spring is None and load.damper is None:
                 continue
             d = self._line(load, by_name)
             if d is None:
                 continue
+            ends = (load.between[0].text, load.between[1].text)
             where = f"loads[{load.index}]"
             length = sp.sqrt(sum(x ** 2 for x in d))
             if load.spring is not None:
@@ -41,11 +43,13 @@ class Lines:
                 free = self.expression(load.length, f"{where}.length", self.scopes.constant) if load.length else 0
                 if k is not None and free is not None:
                     potential += k * (length - free) ** 2 / 2
+                    lines.append(Line(ends, stiffness=k, length=free))
             else:
                 c = self.expression(load.damper, f"{where}.damper", self.scopes.load)
                 if c is not None:
                     work = (work or Form(())) + self._damper_work(c, d, length)
-        return potential, work
+                    lines.append(Line(ends, damping=c))
+        return potential, work, tuple(lines)
 
     def _line(self, load: LoadDecl, bodies: dict[str, Body]):
         """B − A in N components, or None after a located error (an end unknown, or ends that coincide)."""

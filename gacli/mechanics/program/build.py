@@ -24,6 +24,7 @@ from gacli.mechanics.program.contacts import contact
 from gacli.mechanics.program.formbodies import FormMotion, assemble_bodies
 from gacli.mechanics.program.forms import TURNINGS, FormRows, form_rows, rates_held
 from gacli.mechanics.program.frames import FrameTree
+from gacli.mechanics.program.lines import line_loads
 from gacli.mechanics.program.loads import distribute
 from gacli.mechanics.program.motion import Motion
 from gacli.mechanics.program.planar import planar_frames
@@ -298,7 +299,8 @@ def _units(system: System, motion: Motion, passes: Passes, substitution: dict, s
     tape.stage = "body setup"
     groups = units(motion.tree, motion.links, system.frames.bodies, coordinates, passes.partial)
     tape.stage = "loads"
-    shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads, substitution, coordinates)
+    loads = system.frames.loads + line_loads(motion, passes.actual, system.frames.lines)
+    shares, loose = distribute(motion.tree, motion.links, groups, loads, substitution, coordinates)
     for u, share in zip(groups, shares):
         assemble(motion, u, share, passes, sums)
     tape.stage = "F"
@@ -312,10 +314,13 @@ def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root:
     """F_r += Σ_s (c_s − ∂V/∂q_s) δr_s/δu_r (eq. 14.13), the work form's coefficients c_s over every rate."""
     tape = motion.tape
     names = list(system.rate_names)
-    coefficient = {q: -sp.diff(system.potential, S.value(q)) for q in names}
-    if system.work is not None:
+    # The lines are forces here (_units); the file's own potential and work are the rest.
+    apart = system.frames is not None and system.frames.lines
+    potential, work = (system.frames.potential, system.frames.work) if apart else (system.potential, system.work)
+    coefficient = {q: -sp.diff(potential, S.value(q)) for q in names}
+    if work is not None:
         for q in names:
-            coefficient[q] += system.work.coefficient(q).xreplace(substitution)
+            coefficient[q] += work.coefficient(q).xreplace(substitution)
     coefficient = {q: tape.let(c) for q, c in coefficient.items() if c != 0}
     for r, p in enumerate(passes.partial):
         root = motion.velocity(motion.root, p, INERTIAL) if set(coefficient) & set(at_root) else None

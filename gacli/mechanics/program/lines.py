@@ -1,0 +1,45 @@
+"""Springs and dampers as the forces they are: along the line between their ends, as Kane takes them.
+
+The loader also writes a line as a potential ½ k (ℓ − L)² and a work form
+−c ℓ̇ δℓ (gacli.loader.lines), which every other route differentiates in
+the coordinates. For the program that is the long way round: an end fixed
+in a body turned by Euler parameters has a position quadratic in them, and
+∂V/∂e contracted with ė = ½ Eᵀ ω costs far more than the force it is. A
+line is a force f = −T d/ℓ at its end B and −f at A, d = B − A,
+T = k (ℓ − L) + c ℓ̇ with ℓ̇ = d·(v_B − v_A)/ℓ; the loads then go to the
+units as any force at a point does (gacli.mechanics.program.loads: the
+unit's resultant, and r × f about its centre). With L = 0 the spring's
+force is −k d, with no root taken.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from gacli.frame_model import INERTIAL, FrameVector, Line, Load
+from gacli.mechanics.program.motion import Motion
+from gacli.mechanics.program.vectors import Pass, add, dot, neg, scale
+
+
+def line_loads(motion: Motion, actual: Pass, lines: tuple[Line, ...]) -> tuple[Load, ...]:
+    """Each line's force at both its ends, along N."""
+    tape = motion.tape
+    out: list[Load] = []
+    for line in lines:
+        a, b = line.ends
+        d = tape.vec(add(motion.position(b, INERTIAL), neg(motion.position(a, INERTIAL))))
+        squared = tape.let(dot(d, d))
+        per_length = sp.S.Zero  # T / ℓ
+        if line.stiffness is not None:
+            if line.length == 0:
+                per_length += line.stiffness
+            else:
+                length = tape.let(sp.sqrt(squared))
+                per_length += line.stiffness * (length - line.length) / length
+        if line.damping is not None:
+            v = add(motion.velocity(b, actual, INERTIAL), neg(motion.velocity(a, actual, INERTIAL)))
+            per_length += line.damping * tape.let(dot(d, v)) / squared
+        f = tape.vec(scale(-tape.let(per_length), d))
+        out += [Load(FrameVector(((INERTIAL, f),)), False, point=b),
+                Load(FrameVector(((INERTIAL, neg(f)),)), False, point=a)]
+    return tuple(out)
