@@ -474,3 +474,32 @@ loads:
     with_rates = text.replace("[q0, q1, q2, q3]}", "[q0, q1, q2, q3], rates: [w1, w2, w3]}").replace(
         "coordinates: [x, y, z, q0, q1, q2, q3]", "coordinates: [x, y, z, q0, q1, q2, q3]\nquasi_coordinates: [w1, w2, w3]")
     assert "without body rates" not in invoke(str(write(tmp_path, "r.yaml", with_rates))).stderr
+
+
+def test_a_norm_kept_by_its_differential_is_noted_where_it_is_stated(tmp_path):
+    # e·de = 0 keeps e·e at its start, which the file does not state: the kinematics divide by e·e,
+    # where the finite constraint lets generated code read on the unit sphere. Right as it stands: a note.
+    text = """gacli: 1
+name: norm_by_differential
+parameters: [m, g, A, B, C]
+coordinates: [x, y, z, q0, q1, q2, q3]
+quasi_coordinates:
+  w1: 2*(-q1*dq0 + q0*dq1 + q3*dq2 - q2*dq3)
+  w2: 2*(-q2*dq0 - q3*dq1 + q0*dq2 + q1*dq3)
+  w3: 2*(-q3*dq0 + q2*dq1 - q1*dq2 + q0*dq3)
+constraints:
+  - q0*dq0 + q1*dq1 + q2*dq2 + q3*dq3 = 0
+independent: [x, y, z, w1, w2, w3]
+bodies:
+  body: {mass: m, position: [x, y, z], inertia: [A, B, C], rotation: [dw1, dw2, dw3]}
+potential: m*g*z
+"""
+    path = str(write(tmp_path, "n.yaml", text))
+    result = invoke(path, "--strict")
+    assert result.exit_code == 0
+    assert re.search(r"n\.yaml:10:\d+: note: constraints\[0\]: this row keeps q0\*\*2 \+ q1\*\*2 \+ q2\*\*2 \+ q3\*\*2 "
+                     r"at its starting value", result.stderr), result.stderr
+    stated = text.replace("q0*dq0 + q1*dq1 + q2*dq2 + q3*dq3 = 0", "q0**2 + q1**2 + q2**2 + q3**2 = 1")
+    assert "starting value" not in invoke(str(write(tmp_path, "s.yaml", stated))).stderr
+    other = text.replace("q0*dq0 + q1*dq1 + q2*dq2 + q3*dq3 = 0", "q0*dq0 + q1*dq1 + q2*dq2 + 2*q3*dq3 = 0")
+    assert "starting value" not in invoke(str(write(tmp_path, "o.yaml", other))).stderr

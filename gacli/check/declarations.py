@@ -1,6 +1,10 @@
-"""Declarations nothing uses: warnings (parameters, coordinates) and notes (inputs)."""
+"""Declarations nothing uses: warnings (parameters, coordinates) and notes (inputs); declarations
+that cost generated code a division the system need not have (a quaternion frame without rates, a
+norm kept by its differential)."""
 
 from __future__ import annotations
+
+import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location
@@ -32,7 +36,7 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     for c in system.coordinates:
         if c.name not in bodies:
             out.append(_warning(c.location, f"coordinates.{c.name}", _moves_nothing(system, c.name)))
-    return out + _quaternions_without_rates(system)
+    return out + _quaternions_without_rates(system) + _norms_by_their_differential(system)
 
 
 def _quaternions_without_rates(system: System) -> list[Diagnostic]:
@@ -51,6 +55,27 @@ def _quaternions_without_rates(system: System) -> list[Diagnostic]:
                             "Euler parameter's rate is solved from the unit norm by dividing by a parameter, so "
                             "the equations are singular where it is zero (an ordinary attitude); give the frame "
                             "'rates: [w_1, w_2, w_3]', three quasi-coordinates (docs/frames.md)"))
+    return out
+
+
+def _norms_by_their_differential(system: System) -> list[Diagnostic]:
+    """A Pfaffian row Σ x_i dx_i = 0 over coordinates keeps x·x at its starting value, which the file
+    does not name: the kinematics divide by x·x (Euler parameters' ė = ½ Eᵀ ω / e·e), where the
+    finite constraint x·x = 1 lets generated code read on the unit sphere (gacli.mechanics.spheres).
+    A note: the row is right as it stands."""
+    out = []
+    for i, c in enumerate(system.constraints):
+        pairs = c.form.coefficients
+        if c.relation is not None or c.derived or c.rates is not None or c.form.dt != 0 or len(pairs) < 2:
+            continue
+        ratios = {sp.cancel(coefficient / S.value(name)) for name, coefficient in pairs}
+        if len(ratios) != 1 or not next(iter(ratios)).is_number:
+            continue
+        norm = " + ".join(f"{name}**2" for name, _ in pairs)
+        out.append(Diagnostic(c.location, f"this row keeps {norm} at its starting value, which the file does not "
+                              "state, so the kinematic equations divide by it; if it is 1 (Euler parameters), "
+                              f"write the constraint '{norm} = 1' instead and generated code reads on the unit "
+                              "sphere (docs/program.md)", f"constraints[{i}]", severity="note"))
     return out
 
 
