@@ -19,6 +19,8 @@ paired as the components of one vector along the frame turned by φ.
 
 from __future__ import annotations
 
+import itertools
+
 import sympy as sp
 
 from gacli.algebra import symbols as S
@@ -34,10 +36,14 @@ def planar_frames(system: System) -> FrameModel | None:
         return None
     coordinates = {S.value(c.name): c.name for c in system.coordinates}
     builder = _Builder(coordinates)
+    for body in system.bodies:  # a body's frame is named after it, whatever needs it first
+        angle = builder.angle(body.rotation) if body.rotation is not None else None
+        if angle is not None:
+            builder.names.setdefault(angle, body.name)
     bodies = []
     for body in system.bodies:
         frame = builder.turned_by(body.rotation) if body.rotation is not None else None
-        point = builder.point(body.position)
+        point = builder.point(body.position, f"{body.name}@")
         if point is None or (body.rotation is not None and frame is None):
             return None
         bodies.append(BodyPlacement(body.name, body.mass, point, frame, body.inertia if frame else None))
@@ -49,8 +55,8 @@ def planar_frames(system: System) -> FrameModel | None:
 
 def _loads(system: System, builder: "_Builder", frames: dict) -> tuple[Load, ...] | None:
     out = []
-    for force in system.forces:
-        point = builder.point(force.point)
+    for i, force in enumerate(system.forces):
+        point = builder.point(force.point, f"forces[{i}]@")
         if point is None:
             return None
         out.append(Load(FrameVector(((INERTIAL, force.vector),)), False, point=point))
@@ -69,41 +75,49 @@ class _Builder:
         self.frames: dict = {sp.S.Zero: INERTIAL}
         self.edges: list[FrameEdge] = []
         self.links: list[PointLink] = []
+        self.names: dict = {}  # angle → the name of its frame, a body's own
         self._prefixes: dict = {}
 
-    def turned_by(self, rotation: tuple[Form, Form, Form]) -> str | None:
-        """The frame of a body whose rotation forms are (0, 0, Σ c_s dq_s), c_s numbers; or None."""
+    def angle(self, rotation: tuple[Form, Form, Form]) -> sp.Expr | None:
+        """Σ c_s q_s of a body whose rotation forms are (0, 0, Σ c_s dq_s), c_s numbers; or None."""
         x, y, z = rotation
         if x.coefficients or y.coefficients or x.dt != 0 or y.dt != 0 or z.dt != 0:
             return None
         names = set(self.coordinates.values())
         if not all(n in names and c.is_number for n, c in z.coefficients):
             return None
-        return self.frame(sp.Add(*(c * S.value(n) for n, c in z.coefficients)))
+        return sp.Add(*(c * S.value(n) for n, c in z.coefficients))
+
+    def turned_by(self, rotation: tuple[Form, Form, Form]) -> str | None:
+        """The frame of a body turned by :meth:`angle`; or None."""
+        angle = self.angle(rotation)
+        return self.frame(angle) if angle is not None else None
 
     def frame(self, angle: sp.Expr) -> str:
         """The frame turned by ``angle`` from N, hung from the frame whose angle differs least from it."""
         if angle in self.frames:
             return self.frames[angle]
         parent = min(self.frames, key=lambda a: (len(sp.Add.make_args(angle - a)), -len(sp.Add.make_args(a))))
-        name = f"#planar{len(self.edges)}"
+        name = self.names.get(angle) or next(f"frame{i}" for i in itertools.count(len(self.edges) + 1)
+                                             if f"frame{i}" not in self.names.values())
         self.edges.append(FrameEdge(name, self.frames[parent], Z, angle - parent))
         self.frames[angle] = name
         return name
 
-    def point(self, position) -> str | None:
-        """The point link at ``position`` (N components), its terms along their frames; or None."""
+    def point(self, position, name: str) -> str | None:
+        """The point link at ``position`` (N components), its terms along their frames, the last link
+        ``name`` unless another position ran through it first; or None."""
         terms = _terms(position, set(self.coordinates))
         if terms is None:
             return None
         parent, prefix = None, ()
-        for angle, components in terms:
+        for i, (angle, components) in enumerate(terms):
             prefix += ((angle, components),)
             if prefix not in self._prefixes:
-                name = f"#planar_point{len(self.links)}"
+                link = name if i == len(terms) - 1 else f"joint{len(self.links) + 1}"
                 frame = self.frame(angle) if angle != 0 else INERTIAL
-                self.links.append(PointLink(name, parent, frame, components))
-                self._prefixes[prefix] = name
+                self.links.append(PointLink(link, parent, frame, components))
+                self._prefixes[prefix] = link
             parent = self._prefixes[prefix]
         return parent
 
