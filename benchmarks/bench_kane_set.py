@@ -162,6 +162,7 @@ class GacliSide:
 
     def evaluate(self, values: dict) -> dict:
         import numpy as np
+        import sympy as sp
 
         out = np.real(np.array(self.program(values["gacli"]), dtype=complex))
         n, k = len(self.names), self.k
@@ -190,12 +191,14 @@ class KaneSide:
 
     def evaluate(self, values: dict) -> dict:
         import numpy as np
+        import sympy as sp
 
         model, ref = self.reference.model, self.reference
         point = {sym: values["names"][name] for q, sym in self.q_plain.items()
                  for name in [ref.coordinates[q]]}
         point.update({model.parameters[name]: v for name, v in values["parameters"].items()
                       if name in model.parameters})
+        point[sp.Symbol("t")] = values.get("time", 0.0)  # dynamicsymbols' time, where a model holds it
         for u, value in zip(model.u_ind, values["speeds"]):
             point[self.u_plain[u]] = value
         dependent = self._dependent(point)
@@ -238,8 +241,10 @@ def random_state(derivation, reference, rng) -> dict:
     speeds = [float(rng.uniform(-1.0, 1.0)) for _ in derivation.speeds]
     values = {S.value(n): v for n, v in {**parameters, **names}.items()}
     values.update(dict(zip(derivation.speeds, speeds)))
-    values[S.T] = 0.0
-    return {"gacli": values, "names": names, "parameters": parameters, "speeds": speeds}
+    # A support shaken by A sin(w t) has no acceleration at t = 0: a time that tests it.
+    time = float(rng.uniform(0.3, 1.2))
+    values[S.T] = time
+    return {"gacli": values, "names": names, "parameters": parameters, "speeds": speeds, "time": time}
 
 
 def _configuration(reference, names: dict, parameters: dict) -> dict:

@@ -58,10 +58,10 @@ def test_generated_code_agrees_with_kane_and_costs_no_more(name):
 # a quaternion frame with an offset centre, a quaternion top's inertia given about its pivot, Euler
 # parameters written out by hand (a gyrostat's offset wheels, a thruster off the centre), whose
 # polynomials e·e = 1 shortens only when code reads them on the file's own constraint, a chain of
-# relative angles written out (its angle sums read as frames), a spring and a damper from a hook to a
+# relative angles written out, its angle sums as sums or multiplied out (read as frames), a spring and a damper from a hook to a
 # quaternion body's corner (forces along the line, not a potential and a work form in e).
 VARIANTS = ["cart_chain3_springs", "ball_quaternion", "qtop_about", "gyrostat_quat_f1", "free_quat_loads_f1",
-            "chain4_format1", "quat_spring_damper"]
+            "chain4_format1", "quat_spring_damper", "chain4_expanded"]
 
 
 @pytest.mark.parametrize("name", VARIANTS)

@@ -16,6 +16,7 @@ import numpy as np
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra import turns
 from gacli.algebra.matrices import rank
 from gacli.frame_model import INERTIAL
 from gacli.mechanics.program import rows as R
@@ -317,6 +318,7 @@ def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root:
     # The lines are forces here (_units); the file's own potential and work are the rest.
     apart = system.frames is not None and system.frames.lines
     potential, work = (system.frames.potential, system.frames.work) if apart else (system.potential, system.work)
+    potential = _folded(potential, [S.value(c.name) for c in system.coordinates])
     coefficient = {q: -sp.diff(potential, S.value(q)) for q in names}
     if work is not None:
         for q in names:
@@ -326,3 +328,12 @@ def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root:
         root = motion.velocity(motion.root, p, INERTIAL) if set(coefficient) & set(at_root) else None
         for q, c in coefficient.items():
             sums.load(r, c * (root[at_root[q]] if q in at_root else p.rate(q)))
+
+
+def _folded(potential: sp.Expr, coordinates: list[sp.Symbol]) -> sp.Expr:
+    """V with its products of sines and cosines folded into sines and cosines of sums, where shorter
+    (gacli.algebra.turns): a chain's weight written with its angle sums multiplied out."""
+    if not potential.has(sp.sin, sp.cos):
+        return potential
+    folded = turns.folded(potential, sorted(coordinates, key=str))
+    return folded if folded is not None and sp.count_ops(folded) < sp.count_ops(potential) else potential

@@ -24,6 +24,7 @@ import itertools
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.turns import angle, real_imaginary, turns
 from gacli.frame_model import INERTIAL, BodyPlacement, FrameEdge, FrameModel, FrameVector, Load, PointLink
 from gacli.model import Form, System
 
@@ -124,56 +125,36 @@ class _Builder:
 
 def _terms(position, coordinates: set) -> list[tuple[sp.Expr, tuple]] | None:
     """[(angle, components along the frame turned by it)], N's part first (angle 0), then by angle;
-    None when a term is not c cos φ or c sin φ paired as one vector's components."""
-    x, y, z = (sp.expand(c) for c in position)
+    None when the position is not planar, too large, or turns by other than whole multiples of the
+    coordinates. x + i y is a sum of turns Σ c_m e^(i m·q) (gacli.algebra.turns): each is the vector
+    (Re c_m, Im c_m) along the frame turned by m·q, whether the file wrote cos(q1 + q2) or
+    cos q1 cos q2 − sin q1 sin q2, and the part with m = 0 lies along N."""
+    x, y, z = (sp.S(c) for c in position)
     if z.free_symbols & coordinates:
         return None
-    rest, parts = [sp.S.Zero, sp.S.Zero], {}
-    for i, component in enumerate((x, y)):
-        for term in sp.Add.make_args(component):
-            split = _turned(term, coordinates)
-            if split is None:
-                return None
-            if split[0] is None:
-                rest[i] += term
-                continue
-            angle, kind, c = split
-            parts.setdefault(angle, {}).setdefault((i, kind), []).append(c)
-    out = [(sp.S.Zero, (rest[0], rest[1], z))] if (rest[0] != 0 or rest[1] != 0 or z != 0) else []
-    for angle in sorted(parts, key=lambda a: (len(sp.Add.make_args(a)), sp.default_sort_key(a))):
-        vector = _along(parts[angle])
-        if vector is None:
+    order = sorted(coordinates, key=str)
+    parts = turns(x + sp.I * y, order)
+    if parts is None:
+        return None
+    offsets = _offsets([x, y], order)
+    out = []
+    for m in sorted(parts, key=lambda m: (sum(k != 0 for k in m), [abs(k) for k in m], m)):
+        alpha = offsets.get(m, sp.S.Zero)  # a frame turned by q1 + π/6 when the file writes so
+        u, v = real_imaginary(sp.expand(parts[m] * (sp.cos(alpha) - sp.I * sp.sin(alpha))))
+        if u.has(sp.I):
             return None
-        out.append((angle, vector))
+        phi = angle(m, order) + alpha
+        out.append((phi, (u, v, z if phi == 0 else sp.S.Zero)))
+    if z != 0 and not any(phi == 0 for phi, _ in out):
+        out.insert(0, (sp.S.Zero, (sp.S.Zero, sp.S.Zero, z)))
     return out or [(sp.S.Zero, (sp.S.Zero, sp.S.Zero, sp.S.Zero))]
 
 
-def _turned(term: sp.Expr, coordinates: set):
-    """(angle, 'cos' or 'sin', coefficient) of c·cos φ or c·sin φ; (None,) for a term with no
-    turn in it; None for any other term that holds the coordinates in a function."""
-    trig = [f for f in sp.Mul.make_args(term) if isinstance(f, (sp.cos, sp.sin)) and f.free_symbols & coordinates]
-    if not trig:
-        if any(isinstance(f, sp.Function) or (f.is_Pow and not f.exp.is_Integer)
-               for f in sp.preorder_traversal(term) if f.free_symbols & coordinates and f is not term):
-            return None
-        return (None,)
-    if len(trig) != 1:
-        return None
-    f = trig[0]
-    angle = f.args[0]
-    c = term / f
-    if not angle.is_polynomial(*coordinates) or sp.Poly(angle, *sorted(coordinates, key=str)).total_degree() != 1:
-        return None
-    if not all(sp.diff(angle, q).is_number for q in angle.free_symbols & coordinates):
-        return None
-    if angle.free_symbols - coordinates or (c.free_symbols & coordinates and not c.is_polynomial(*coordinates)):
-        return None
-    return angle, "cos" if isinstance(f, sp.cos) else "sin", c
-
-
-def _along(part: dict) -> tuple | None:
-    """(u, v, 0) along the frame turned by φ from x = u cos φ − v sin φ, y = u sin φ + v cos φ."""
-    xc, xs, yc, ys = (sp.Add(*part.get(key, [])) for key in ((0, "cos"), (0, "sin"), (1, "cos"), (1, "sin")))
-    if sp.expand(xc - ys) != 0 or sp.expand(yc + xs) != 0:
-        return None
-    return (xc, yc, sp.S.Zero)
+def _offsets(components: list, order: list) -> dict[tuple, sp.Expr]:
+    """{m: α} where the sines and cosines of the components turn by m·q + α with one constant α ≠ 0."""
+    found: dict[tuple, set] = {}
+    for f in (f for c in components for f in sp.preorder_traversal(c) if isinstance(f, (sp.cos, sp.sin))):
+        m = tuple(sp.diff(f.args[0], q) for q in order)
+        if any(k != 0 for k in m):
+            found.setdefault(m, set()).add(sp.expand(f.args[0] - angle(m, order)))
+    return {m: alpha.pop() for m, alpha in found.items() if len(alpha) == 1 and next(iter(alpha)) != 0}
