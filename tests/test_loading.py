@@ -214,3 +214,19 @@ def test_a_file_sympy_cannot_evaluate_is_one_located_error(error, monkeypatch):
         loading.loads("gacli: 1\nname: x\ncoordinates: [q]\nbodies: {b: {mass: 1, position: [q, 0, 0]}}\n",
                       path="bad.yaml")
     assert caught.value.diagnostics[0].location.path == "bad.yaml"
+
+
+def test_a_rotation_component_may_be_zero():
+    # A turret turning about the fixed vertical: its body rates are (0, 0, q1'), and a user writes the zeros.
+    text = """gacli: 1
+name: turret
+parameters: [m, A, B, C, D]
+coordinates: [q1]
+bodies:
+  turret: {mass: m, position: [0, 0, 0], inertia: [[A, D, 0], [D, B, 0], [0, 0, C]], rotation: [%s, 0*dq1, dq1]}
+"""
+    for zero in ("0", "dq1 - dq1"):
+        body = loads(text % zero, "t.yaml").bodies[0]
+        assert [f.coefficients for f in body.rotation] == [(), (), (("q1", 1),)]
+    with pytest.raises(SystemFileError, match="found no differential"):
+        loads(text % "q1", "t.yaml")

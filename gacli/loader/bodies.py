@@ -169,7 +169,8 @@ class Geometry:
         return matrix
 
     def _rotation(self, decl: BodyDecl, where: str) -> tuple[Form, Form, Form] | None:
-        forms = [self._form(item, f"{where}.rotation[{i}]", self.scopes.form) for i, item in enumerate(decl.rotation)]
+        forms = [self._form(item, f"{where}.rotation[{i}]", self.scopes.form, zero=True)
+                 for i, item in enumerate(decl.rotation)]
         if not forms or any(f is None for f in forms):
             return None
         if len(forms) == 1:

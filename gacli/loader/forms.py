@@ -27,14 +27,19 @@ from gacli.read.source import Scalar
 class Forms:
     """Forms, quasi-coordinates and constraints, for the loader's builder."""
 
-    def _form(self, text: Scalar, where: str, scope: Scope, start: int = 0, stop: int | None = None) -> Form | None:
+    def _form(self, text: Scalar, where: str, scope: Scope, start: int = 0, stop: int | None = None,
+              zero: bool = False) -> Form | None:
+        """The form ``text`` writes; ``zero``: 0 (or any expression that vanishes) is the zero form, as
+        a rotation component about which a body does not turn (``rotation: [0, 0, dq1]``)."""
         expr = self.expression(text, where, scope, start, stop)
         if expr is None:
             return None
-        return self._as_form(expr, text, where, start)
+        return self._as_form(expr, text, where, start, zero)
 
-    def _as_form(self, expr: sp.Expr, text: Scalar, where: str, start: int = 0) -> Form | None:
+    def _as_form(self, expr: sp.Expr, text: Scalar, where: str, start: int = 0, zero: bool = False) -> Form | None:
         try:
+            if zero and vanishes(expr):
+                return Form(())
             return self._linear_form(expr, text, where, start)
         except (ArithmeticError, ValueError, TypeError, RecursionError):
             # SymPy evaluates numbers as it goes; an extreme one (cosh(cosh(1e300))) overflows.
