@@ -6,7 +6,9 @@ the coordinates. For the program that is the long way round: an end fixed
 in a body turned by Euler parameters has a position quadratic in them, and
 ∂V/∂e contracted with ė = ½ Eᵀ ω costs far more than the force it is. A
 line is a force f = −T d/ℓ at its end B and −f at A, d = B − A,
-T = k (ℓ − L) + c ℓ̇ with ℓ̇ = d·(v_B − v_A)/ℓ; the loads then go to the
+T = k (ℓ − L) + c ℓ̇ with ℓ̇ = d·(v_B − v_A)/ℓ, all along the nearest frame both
+ends' links hang from (a strut between a pan stage and its camera: along the
+stage, from the links below their shared point); the loads then go to the
 units as any force at a point does (gacli.mechanics.program.loads: the
 unit's resultant, and r × f about its centre). With L = 0 the spring's
 force is −k d, with no root taken.
@@ -16,9 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli.frame_model import INERTIAL, FrameVector, Line, Load
+from gacli.frame_model import FrameVector, Line, Load
 from gacli.mechanics.program.motion import Motion
-from gacli.mechanics.program.vectors import Pass, add, dot, neg, scale
+from gacli.mechanics.program.vectors import ZV, Pass, add, dot, neg, scale
 
 
 def line_loads(motion: Motion, actual: Pass, lines: tuple[Line, ...]) -> tuple[Load, ...]:
@@ -27,7 +29,8 @@ def line_loads(motion: Motion, actual: Pass, lines: tuple[Line, ...]) -> tuple[L
     out: list[Load] = []
     for line in lines:
         a, b = line.ends
-        d = tape.vec(add(motion.position(b, INERTIAL), neg(motion.position(a, INERTIAL))))
+        frame = motion.tree.common(motion.frame_of(a), motion.frame_of(b))
+        d = tape.vec(between(motion, a, b, frame))
         squared = tape.let(dot(d, d))
         per_length = sp.S.Zero  # T / ℓ
         if line.stiffness is not None:
@@ -37,9 +40,28 @@ def line_loads(motion: Motion, actual: Pass, lines: tuple[Line, ...]) -> tuple[L
                 length = tape.let(sp.sqrt(squared))
                 per_length += line.stiffness * (length - line.length) / length
         if line.damping is not None:
-            v = add(motion.velocity(b, actual, INERTIAL), neg(motion.velocity(a, actual, INERTIAL)))
+            v = add(motion.velocity(b, actual, frame), neg(motion.velocity(a, actual, frame)))
             per_length += line.damping * tape.let(dot(d, v)) / squared
         f = tape.vec(scale(-tape.let(per_length), d))
-        out += [Load(FrameVector(((INERTIAL, f),)), False, point=b),
-                Load(FrameVector(((INERTIAL, neg(f)),)), False, point=a)]
+        out += [Load(FrameVector(((frame, f),)), False, point=b),
+                Load(FrameVector(((frame, neg(f)),)), False, point=a)]
     return tuple(out)
+
+
+def between(motion: Motion, a: str, b: str, frame: str) -> tuple:
+    """B − A along ``frame``: the links of each below the last link both hang from, turned into it."""
+    def chain(point: str | None) -> list[str]:
+        out = []
+        while point is not None:
+            out.append(point)
+            point = motion.links[point].parent
+        return out
+
+    above_a, above_b = chain(a), chain(b)
+    shared = set(above_a) & set(above_b)
+    d = ZV
+    for sign, links in ((1, above_b), (-1, above_a)):
+        for name in (n for n in links if n not in shared):
+            link = motion.links[name]
+            d = add(d, scale(sign, motion.tree.express(link.components, link.frame, frame)))
+    return d
