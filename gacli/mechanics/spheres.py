@@ -22,6 +22,7 @@ import sympy as sp
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsNeeded, PolynomialError
 
 from gacli.algebra import symbols as S
+from gacli.algebra.graph import is_small
 from gacli.model import System
 
 
@@ -48,7 +49,11 @@ def spheres(system: System) -> tuple[Sphere, ...]:
 
 
 def _stated(relation: sp.Expr, coordinates: set) -> Sphere | None:
-    """a Σ x_i² + b = 0 with a, b constants and b ≠ 0, as a sphere; None for any other relation."""
+    """a Σ x_i² + b = 0 with a, b constants and b ≠ 0, as a sphere; None for any other relation (one
+    too large, or with a power past 2, is not expanded to see)."""
+    if not is_small(relation, 200) or any(p.is_Pow and not (p.exp.is_Integer and abs(p.exp) <= 2)
+                                          for p in sp.preorder_traversal(relation)):
+        return None
     f = sp.expand(relation)
     moving = sorted(f.free_symbols & coordinates, key=str)
     if len(moving) < 2 or S.T in f.free_symbols or not f.is_polynomial(*moving):
@@ -70,7 +75,7 @@ def on_spheres(point: dict, system: System) -> dict:
         if not all(x in point for x in sphere.symbols):
             continue
         radius2 = sphere.radius2.xreplace(point)
-        if not radius2.is_number:
+        if not (radius2.is_number and radius2.is_positive):  # no real point on it: nothing to scale
             continue
         norm = sp.sqrt(sum(point[x] ** 2 for x in sphere.symbols) / radius2)
         point.update({x: sp.Float(point[x] / norm, 20) for x in sphere.symbols})
