@@ -4,8 +4,6 @@ norm kept by its differential)."""
 
 from __future__ import annotations
 
-import sympy as sp
-
 from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location
 from gacli.algebra.graph import free_symbols
@@ -68,8 +66,12 @@ def _norms_by_their_differential(system: System) -> list[Diagnostic]:
         pairs = c.form.coefficients
         if c.relation is not None or c.derived or c.rates is not None or c.form.dt != 0 or len(pairs) < 2:
             continue
-        ratios = {sp.cancel(coefficient / S.value(name)) for name, coefficient in pairs}
-        if len(ratios) != 1 or not next(iter(ratios)).is_number:
+        # Read off the coefficients' shape, c·x with c a rational: nothing in them is evaluated (a
+        # hostile exp(exp(exp(exp(100)))) overflowed a division's cancel).
+        split = [coefficient.as_coeff_Mul() for _, coefficient in pairs]
+        if not all(rest == S.value(name) and c.is_Rational for (name, _), (c, rest) in zip(pairs, split)):
+            continue
+        if len({c for c, _ in split}) != 1:
             continue
         norm = " + ".join(f"{name}**2" for name, _ in pairs)
         out.append(Diagnostic(c.location, f"this row keeps {norm} at its starting value, which the file does not "
