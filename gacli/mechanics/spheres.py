@@ -42,8 +42,8 @@ def spheres(system: System) -> tuple[Sphere, ...]:
     coordinates = {S.value(c.name) for c in system.coordinates}
     for c in system.constraints:
         if c.relation is not None and c.rates is None and not c.derived:
-            sphere = _stated(c.relation, coordinates)
-            if sphere is not None and sphere not in out:
+            sphere = _stated(c.relation, coordinates)  # a frame's own unit norm is its sphere already
+            if sphere is not None and set(sphere.symbols) not in [set(s.symbols) for s in out]:
                 out.append(sphere)
     return tuple(out)
 
@@ -91,7 +91,8 @@ def read_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
         on = sp.expand(closed.xreplace({x[0] ** 2: sphere.radius2 - sp.Add(*(y ** 2 for y in x[1:]))}))
         if not on.free_symbols & set(x):
             return on
-    return expr
+    on = remainder_on(closed, all_spheres)  # (e·e)², a translation's rows along the body's axes
+    return on if not on.free_symbols & {x for s in all_spheres for x in s.symbols} else expr
 
 
 def remainder_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
@@ -106,3 +107,4 @@ def remainder_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
         except (PolynomialError, CoercionFailed, GeneratorsNeeded):
             continue
     return expr
+
