@@ -18,12 +18,8 @@ None of these can be a declared name (those are identifiers).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import sympy as sp
-
-if TYPE_CHECKING:  # gacli.model imports this module
-    from gacli.model import Form
 
 Triple = tuple[sp.Expr, sp.Expr, sp.Expr]
 INERTIAL = "N"
@@ -144,4 +140,4 @@ class FrameModel:
     # them (the System's potential and work hold the lines too, gacli.loader.lines).
     lines: tuple[Line, ...] = ()
     potential: sp.Expr = sp.S.Zero
-    work: Form | None = None
+    work: object = None  # a gacli.model.Form, or None (gacli.model imports this module)

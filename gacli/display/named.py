@@ -77,14 +77,13 @@ def point_words(point: str) -> str:
     return point
 
 
+_FIXED = {"actual": ("", "", ""), "gamma": ("_gamma", "", " for gamma"), "rest": ("_rest", "", ", speeds' rates zero")}
+
+
 def _pass(key: str) -> tuple[str, str, str]:
     """(name suffix, words before, words after) of a pass of rates (gacli.mechanics.program.vectors.Pass)."""
-    if key == "actual":
-        return "", "", ""
-    if key == "gamma":
-        return "_gamma", "", " for gamma"
-    if key == "rest":
-        return "_rest", "", ", speeds' rates zero"
+    if key in _FIXED:
+        return _FIXED[key]
     if key.startswith("u_"):
         return f"_{key[2:]}", "partial ", f" for dot({key[2:]})"
     if key.startswith("e_"):
@@ -146,11 +145,8 @@ def label_name(label: tuple) -> tuple[str, str, str]:
 
 
 def is_inline(value: sp.Expr) -> bool:
-    """Worth no name: an atom (another quantity's name: a second name for one value, ``z3 = z1``,
-    says nothing), a function or an integer power of an atom (``cos(yaw)`` and ``r**2`` read as
+    """Worth no name: a function or an integer power of an atom (``cos(yaw)`` and ``r**2`` read as
     well as any name for them)."""
-    if value.is_Atom:
-        return True
     if value.is_Pow:  # r**2, 1/w
         return value.base.is_Atom and value.exp.is_Integer
     return isinstance(value, sp.Function) and len(value.args) == 1 and value.args[0].is_Atom
@@ -245,12 +241,9 @@ def _state_pieces(named: Named, namer: _Namer) -> Named:
         return named
     reduced = [_through(e, back) for e in reduced]
     n, r, m = len(named.quantities), len(named.rates), len(named.mass)
-    # A quantity that is now just a piece's name is that name (z3 = z1 would say nothing).
-    aliases = {q.symbol: e for q, e in zip(named.quantities, reduced) if e.is_Atom and not q.about}
-    for symbol, e in aliases.items():
-        while e in aliases:  # z5 = z3 = z1: z1
-            e = aliases[e]
-        aliases[symbol] = e
+    aliases: dict = {}  # a piece's second name is that piece (z3 = z1; z5 = z3 = z1: z1), in order
+    for q, e in ((q, e) for q, e in zip(named.quantities, reduced) if e.is_Atom and not q.about):
+        aliases[q.symbol] = aliases.get(e, e)
     reduced = [e.xreplace(aliases) for e in reduced]
     quantities = [Quantity(q.symbol, e, q.about) for q, e in zip(named.quantities, reduced) if q.symbol not in aliases]
     return Named(tuple(kept + quantities), tuple((q, e) for (q, _), e in zip(named.rates, reduced[n:n + r])),
