@@ -230,3 +230,20 @@ bodies:
         assert [f.coefficients for f in body.rotation] == [(), (), (("q1", 1),)]
     with pytest.raises(SystemFileError, match="found no differential"):
         loads(text % "q1", "t.yaml")
+
+
+def test_a_comma_that_split_a_flow_mapping_s_text_is_pointed_at():
+    # description: damper anchor on the cart, ahead of the hinge -> a key 'ahead of the hinge' with no value.
+    text = """gacli: 1
+name: comma
+parameters:
+  h: {value: 0.3, description: damper anchor on the cart, ahead of the hinge}
+  m: {value: 1}
+coordinates: [x]
+bodies:
+  b: {mass: m, position: [x, 0, h]}
+"""
+    with pytest.raises(SystemFileError, match=r"unknown key 'ahead of the hinge' \(a comma inside \{\.\.\.\} starts"):
+        loads(text, "c.yaml")
+    with pytest.raises(SystemFileError, match=r"unknown key 'valu' \(did you mean 'value'\?\)"):
+        loads(text.replace("{value: 0.3,", "{valu: 0.3,"), "c.yaml")

@@ -49,7 +49,8 @@ class Reader:
         out = {}
         for key, value in node.items:
             if key.text not in allowed:
-                self.error(key, where, f"unknown key '{key.text}'", did_you_mean(key.text, allowed))
+                hint = did_you_mean(key.text, allowed) or _split(key, value)
+                self.error(key, where, f"unknown key '{key.text}'", hint)
                 continue
             out[key.text] = (key, value)
         return out
@@ -111,6 +112,13 @@ class Reader:
                        "a name is a letter or '_' followed by letters, digits and '_'")
             return None
         return node.text
+
+
+def _split(key: Scalar, value: Node) -> str:
+    """A hint for words with no value in a mapping: a comma in {..} ends an entry, and split a text."""
+    if " " in key.text and isinstance(value, Scalar) and value.kind == "null":
+        return "a comma inside {...} starts a new entry; quote a text that holds one: description: \"a, b\""
+    return ""
 
 
 def did_you_mean(word: str, choices) -> str:
