@@ -12,9 +12,10 @@ plain one and keeps the cheaper (gacli.mechanics.program.build).
 
 Read so only when every body moves in the plane z = const and turns about
 z by a sum of coordinates (its rotation form integrable with constant
-coefficients: only I_zz then enters eq. (14.17)), and each position is a
-part in N plus terms c cos φ, c sin φ with φ linear in the coordinates,
-paired as the components of one vector along the frame turned by φ.
+coefficients: only I_zz then enters eq. (14.17)), and each position holds
+the coordinates only in sines and cosines of whole combinations of them
+(x + i y is then a sum of turns, gacli.algebra.turns: one vector along
+the frame each combination turns, however the file wrote the sums).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ import itertools
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.turns import angle, real_imaginary, turns
+from gacli.algebra import turns as T
 from gacli.frame_model import INERTIAL, BodyPlacement, FrameEdge, FrameModel, FrameVector, Load, PointLink
 from gacli.model import Form, System
 
@@ -38,9 +39,9 @@ def planar_frames(system: System) -> FrameModel | None:
     coordinates = {S.value(c.name): c.name for c in system.coordinates}
     builder = _Builder(coordinates)
     for body in system.bodies:  # a body's frame is named after it, whatever needs it first
-        angle = builder.angle(body.rotation) if body.rotation is not None else None
-        if angle is not None:
-            builder.names.setdefault(angle, body.name)
+        turn = builder.angle(body.rotation) if body.rotation is not None else None
+        if turn is not None:
+            builder.names.setdefault(turn, body.name)
     bodies = []
     for body in system.bodies:
         frame = builder.turned_by(body.rotation) if body.rotation is not None else None
@@ -133,17 +134,17 @@ def _terms(position, coordinates: set) -> list[tuple[sp.Expr, tuple]] | None:
     if z.free_symbols & coordinates:
         return None
     order = sorted(coordinates, key=str)
-    parts = turns(x + sp.I * y, order)
+    parts = T.turns(x + sp.I * y, order)
     if parts is None:
         return None
     offsets = _offsets([x, y], order)
     out = []
     for m in sorted(parts, key=lambda m: (sum(k != 0 for k in m), [abs(k) for k in m], m)):
         alpha = offsets.get(m, sp.S.Zero)  # a frame turned by q1 + π/6 when the file writes so
-        u, v = real_imaginary(sp.expand(parts[m] * (sp.cos(alpha) - sp.I * sp.sin(alpha))))
+        u, v = T.real_imaginary(sp.expand(parts[m] * (sp.cos(alpha) - sp.I * sp.sin(alpha))))
         if u.has(sp.I):
             return None
-        phi = angle(m, order) + alpha
+        phi = T.angle(m, order) + alpha
         out.append((phi, (u, v, z if phi == 0 else sp.S.Zero)))
     if z != 0 and not any(phi == 0 for phi, _ in out):
         out.insert(0, (sp.S.Zero, (sp.S.Zero, sp.S.Zero, z)))
@@ -156,5 +157,5 @@ def _offsets(components: list, order: list) -> dict[tuple, sp.Expr]:
     for f in (f for c in components for f in sp.preorder_traversal(c) if isinstance(f, (sp.cos, sp.sin))):
         m = tuple(sp.diff(f.args[0], q) for q in order)
         if any(k != 0 for k in m):
-            found.setdefault(m, set()).add(sp.expand(f.args[0] - angle(m, order)))
+            found.setdefault(m, set()).add(sp.expand(f.args[0] - T.angle(m, order)))
     return {m: alpha.pop() for m, alpha in found.items() if len(alpha) == 1 and next(iter(alpha)) != 0}
