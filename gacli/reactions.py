@@ -149,7 +149,7 @@ def reaction_system(derivation) -> ReactionSystem:
     names, m = fundamental.names, len(fundamental.relations)
     N = len(names)
     rates = derivation.rates
-    velocities = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
+    velocities = {S.rate(n): e for n, e in rates.dependent()}
     K, b = kkt_entries(fundamental.mass, fundamental.A, fundamental.loads, fundamental.inertial,
                         fundamental.relation_rest, N, m, sp.S.Zero)
     flat = [e for row in K for e in row] + b

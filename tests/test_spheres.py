@@ -5,7 +5,8 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.loader.loading import loads
-from gacli.mechanics.spheres import remainder_on, spheres
+from gacli.algebra.spheres import remainder_on
+from gacli.mechanics.spheres import spheres
 
 FREE_BODY = """
 gacli: 1

@@ -13,8 +13,8 @@ from dataclasses import replace
 
 import sympy as sp
 
-from gacli.frame_model import (INERTIAL, BodyPlacement, FrameEdge, FrameModel, FrameVector, KnifeEdge, Load,
-                               PointLink, RollingContact)
+from gacli.frame_model import (INERTIAL, BodyPlacement, FrameEdge, FrameModel, FrameVector, KnifeEdge, Line,
+                               Load, PointLink, RollingContact)
 from gacli.model import Body
 from gacli.read.schema import SystemDecl, VectorDecl, VelocityConstraintDecl
 
@@ -22,11 +22,11 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 _ZERO3 = (sp.S.Zero, sp.S.Zero, sp.S.Zero)
 
 
-def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
-                owners: dict[str, str] | None = None, lines: tuple = ((), sp.S.Zero, None)) -> FrameModel:
+def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...], owners: dict[str, str] | None = None,
+                lines: tuple[Line, ...] = (), potential: sp.Expr = sp.S.Zero, work=None) -> FrameModel:
     """The records of ``decl``'s frames, points, bodies, rolling contacts and loads (a loaded file: no
-    errors); ``lines``: (the springs and dampers between their ends' names, the file's own potential
-    and work without them)."""
+    errors); ``lines``: the springs and dampers between their ends' names, and ``potential`` and
+    ``work`` the file's own, without them."""
     links: list[PointLink] = []
     edges, origins = _edges(decl, parsed, links)
     for point in decl.points:
@@ -44,8 +44,7 @@ def frame_model(decl: SystemDecl, parsed: dict, bodies: tuple[Body, ...],
                    if ld.reaction is not None)
     knives = tuple(KnifeEdge(c.point.text, _vector(c.along, parsed, INERTIAL)) for c in decl.constraints
                    if isinstance(c, VelocityConstraintDecl))
-    between, potential, work = lines
-    between = tuple(replace(line, ends=tuple(centres.get(e, e) for e in line.ends)) for line in between)
+    between = tuple(replace(line, ends=tuple(centres.get(e, e) for e in line.ends)) for line in lines)
     return FrameModel(tuple(edges), tuple(origins), tuple(links), placements, rolling, loads, knives,
                       between, potential, work)
 

@@ -19,6 +19,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.algebra import trig
+from gacli.algebra.spheres import Sphere, remainder_on
 from gacli.numeric import Program
 from gacli.read.schema import BodyDecl
 
@@ -77,19 +78,12 @@ class MovedInertia:
     def _constant(self, m: sp.Matrix) -> sp.Matrix | None:
         """``m`` reduced by sin² + cos² = 1 and by each quaternion frame's unit norm, or None when
         anything but parameters is left in it (coordinates, t, functions)."""
-        m = m.applyfunc(lambda x: self._on_unit_quaternions(trig.reduce(sp.expand(x))))
+        # A quaternion frame's turns are homogeneous quadratics (gacli.loader.frames), and C_Bᵀ C_B is
+        # (e·e)² E, which is E on the unit sphere where the motion is.
+        units = tuple(Sphere(tuple(S.value(n) for n in q.parameters), sp.S.One) for q in self.quaternion_frames)
+        m = m.applyfunc(lambda x: remainder_on(trig.reduce(sp.expand(x)), units))
         allowed = set(self.known) | self._parameter_symbols()
         return None if any(not x.free_symbols <= allowed for x in m) else m
-
-    def _on_unit_quaternions(self, x: sp.Expr) -> sp.Expr:
-        """``x`` with e0² written 1 − e1² − e2² − e3² for each quaternion frame, a polynomial's remainder
-        by e·e − 1: a quaternion frame's turns are homogeneous quadratics (gacli.loader.frames), and
-        C_Bᵀ C_B is (e·e)² E, which is E on the unit sphere where the motion is."""
-        for q in self.quaternion_frames:
-            e = [S.value(n) for n in q.parameters]
-            if x.free_symbols & set(e) and x.is_polynomial(*e):
-                x = sp.reduced(x, [sum(c ** 2 for c in e) - 1], *e)[1]
-        return x
 
     def _parameter_symbols(self) -> set:
         return {S.value(s.name) for s in self.decl.of_kind("parameter")}

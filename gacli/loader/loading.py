@@ -182,14 +182,14 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
             self.error(self.decl.work, "work", "virtual work has no dt term (δt = 0 in a virtual displacement)")
         potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
         springs, dampers, lines = self._line_loads(bodies)
-        own = (as_expr(potential if potential is not None else 0), work)
+        own = {"potential": as_expr(potential if potential is not None else 0), "work": work}
         potential = springs + (potential if potential is not None else 0)
         work = dampers if work is None else (work if dampers is None else work + dampers)
         constraints = tuple(c for i, d in enumerate(self.decl.constraints) for c in self._constraints_of(i, d))
         constraints += self._unit_norms() + self._rolling_constraints(bodies)
         independent = self._independent()
         uses_frames = bool(self.decl.frames or self.decl.points or self.decl.rolling)
-        frames = (frame_model(self.decl, self.parsed, bodies, self.torque_owners, (lines, *own))
+        frames = (frame_model(self.decl, self.parsed, bodies, self.torque_owners, lines, **own)
                   if uses_frames and not self.diagnostics else None)
         return System(
             name=self.decl.name, path=self.source.path, sha256=self.source.sha256,

@@ -33,10 +33,10 @@ from gacli.algebra import symbols as S
 from gacli.algebra.angles import reduced
 from gacli.algebra.graph import cse_operations, is_small, trees_within
 from gacli.algebra.readable import readable
+from gacli.algebra.spheres import remainder_on
 from gacli.algebra.terms import factor_terms
 from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
-from gacli.mechanics.spheres import remainder_on
 from gacli.model import System
 
 

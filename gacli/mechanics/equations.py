@@ -100,7 +100,7 @@ def _derive(system: System, step: Callable[[str], None]) -> Derivation:
         system=system, rates=rates, motions=motions, mass_matrix=M, forcing=F,
         generalized_forces=Q, kinematic_equations=kinematic,
         dependent_accelerations=_dependent_accelerations(rates, context.gamma),
-        dependent_rates=tuple((n, rates.rate(n)) for n in rates.names if n not in rates.independent),
+        dependent_rates=rates.dependent(),
     )
 
 

@@ -33,7 +33,7 @@ def generalized_forces(system: System, rates: Rates, motions: tuple[BodyMotion, 
         for s, Q_s in enumerate(contribution):
             terms[s].append(Q_s)
     Q = [sp.Add(*t) for t in terms]
-    substitution = {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent}
+    substitution = {S.rate(n): e for n, e in rates.dependent()}
     Q = substitute(Q, substitution) if substitution else Q
     # A torque carried through a chain of frames gives T·sin² + T·cos² − T; a format-1
     # file's loads are as its author wrote them (the display still reduces them).

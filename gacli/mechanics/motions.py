@@ -121,7 +121,7 @@ def motion_context(system: System, rates: Rates) -> MotionContext:
         coords, tuple(S.value(c) for c in coords), tuple(S.rate(c) for c in coords),
         tuple(gamma[c] for c in coords), gamma, tuple(S.rate(n) for n in rates.names),
         S.time_differentiator(rate_symbols_chain(system)),
-        {S.rate(n): rates.rate(n) for n in rates.names if n not in rates.independent})
+        {S.rate(n): e for n, e in rates.dependent()})
 
 
 def point_motion(position, system: System, rates: Rates, context: MotionContext | None = None, J=None) -> Motion:

@@ -65,6 +65,10 @@ class Rates:
         i = self._index[name]
         return sp.Add(*[b * u for b, u in zip(self._beta_rows[i], self.speeds) if nonzero(b)], self._beta0_column[i])
 
+    def dependent(self) -> tuple[tuple[str, sp.Expr], ...]:
+        """(name, β u + β₀) of each rate that is not a speed (eq. 14.7), in declaration order."""
+        return tuple((n, self.rate(n)) for n in self.names if n not in self.independent)
+
     def row_lists(self, names) -> tuple[list[tuple[sp.Expr, ...]], list[tuple[sp.Expr]]]:
         """The rows of β and β₀ for ``names``, for the list arithmetic of :func:`product_rows`."""
         idx = [self._index[n] for n in names]

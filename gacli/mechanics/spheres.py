@@ -6,9 +6,10 @@ file without frames states the same as a holonomic constraint
 motion never leaves that sphere, so an expression may be read on it: the
 rows of body rates 2 G(e) ė and of the norm are orthogonal with squared
 length 4 e·e, which is 4 there, and Kane's explicit ½ Eᵀ ω assumes the same.
-This module names the spheres once, for every place that reads on them: the
-numeric point that ranks the rows (gacli.mechanics.rates), the program's
-solver (gacli.mechanics.program.build) and the tests' random states.
+This module names the spheres once, for every place that reads on them
+(gacli.algebra.spheres): the numeric point that ranks the rows
+(gacli.mechanics.rates), the program's solver (gacli.mechanics.program.build),
+generated code (gacli.mechanics.code) and the tests' random states.
 
 A Pfaffian row e·de = 0 alone keeps e·e constant, not equal to 1, so it
 names no sphere (docs/program.md, "Divisions in generated code").
@@ -16,22 +17,12 @@ names no sphere (docs/program.md, "Divisions in generated code").
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
-from sympy.polys.polyerrors import CoercionFailed, GeneratorsNeeded, PolynomialError
 
 from gacli.algebra import symbols as S
 from gacli.algebra.graph import is_small
+from gacli.algebra.spheres import Sphere
 from gacli.model import System
-
-
-@dataclass(frozen=True)
-class Sphere:
-    """Σ x_i² = radius² over the coordinates ``symbols`` (radius² free of every coordinate)."""
-
-    symbols: tuple[sp.Symbol, ...]
-    radius2: sp.Expr
 
 
 def spheres(system: System) -> tuple[Sphere, ...]:
@@ -80,31 +71,3 @@ def on_spheres(point: dict, system: System) -> dict:
         norm = sp.sqrt(sum(point[x] ** 2 for x in sphere.symbols) / radius2)
         point.update({x: sp.Float(point[x] / norm, 20) for x in sphere.symbols})
     return point
-
-
-def read_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
-    """``expr`` (expanded) with x_0² written radius² − x_1² − …, when that leaves none of a sphere's
-    coordinates in it (a squared row length 4 e·e becomes 4); ``expr`` itself otherwise."""
-    closed = sp.expand(expr)
-    for sphere in all_spheres:
-        x = sphere.symbols
-        on = sp.expand(closed.xreplace({x[0] ** 2: sphere.radius2 - sp.Add(*(y ** 2 for y in x[1:]))}))
-        if not on.free_symbols & set(x):
-            return on
-    on = remainder_on(closed, all_spheres)  # (e·e)², a translation's rows along the body's axes
-    return on if not on.free_symbols & {x for s in all_spheres for x in s.symbols} else expr
-
-
-def remainder_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
-    """``expr``'s remainder by each sphere's x·x − radius² where it is a polynomial in x (x_0² and its
-    higher powers written through radius² − x_1² − …): a top's m l² (e·e)² is m l² on the sphere."""
-    for sphere in all_spheres:
-        x = sphere.symbols
-        if not expr.free_symbols & set(x) or not expr.is_polynomial(*x):
-            continue
-        try:
-            expr = sp.reduced(sp.expand(expr), [sp.Add(*(y ** 2 for y in x)) - sphere.radius2], *x)[1]
-        except (PolynomialError, CoercionFailed, GeneratorsNeeded):
-            continue
-    return expr
-

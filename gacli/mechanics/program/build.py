@@ -18,6 +18,7 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra import turns
 from gacli.algebra.matrices import rank
+from gacli.algebra.spheres import Sphere, read_on
 from gacli.frame_model import INERTIAL
 from gacli.mechanics.program import rows as R
 from gacli.mechanics.program.assemble import Passes, Sums, assemble
@@ -35,7 +36,7 @@ from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.units import units
 from gacli.mechanics.program.vectors import ONE, Pass, dot
-from gacli.mechanics.spheres import read_on, spheres
+from gacli.mechanics.spheres import spheres
 from gacli.model import System
 
 
@@ -156,14 +157,15 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
     if len(kept.directions) + len(forms.forms) != len(dependent):
         raise Unsupported(f"the rows determine {len(kept.directions) + len(forms.forms)} rates, not the "
                           f"{len(dependent)} dependent ones")
-    solver, passes = _rates(system, motion, rows, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
+    kept_on = spheres(system)
+    solver, passes = _rates(kept_on, motion, rows, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
                             dependent, columns)
     if columns and not solver.turns:
         return None
     rates = _kinematics(motion, [c.name for c in system.coordinates], at_root, passes.actual)
     passes = _gamma(system, motion, kept, forms, solver, dependent, passes)
     return replace(_dynamics(system, motion, passes, rates, at_root, gram), independent=tuple(independent),
-                   spheres=spheres(system))
+                   spheres=kept_on)
 
 
 def _check_root_alone(motion: Motion, at_root) -> None:
@@ -177,7 +179,7 @@ def _check_root_alone(motion: Motion, at_root) -> None:
                               "rolling root; write it from the root instead")
 
 
-def _rates(system: System, motion: Motion, columns: dict, dt: list, independent, dependent,
+def _rates(on: tuple[Sphere, ...], motion: Motion, columns: dict, dt: list, independent, dependent,
            turn: bool = False) -> tuple[Solver, Passes]:
     """β from A_d β = −A_i (eq. 14.7), β₀ from A_d β₀ = −a₀ where rows move with time, the dependent
     rates β u + β₀, and the partial passes (eq. 14.8)."""
@@ -188,7 +190,7 @@ def _rates(system: System, motion: Motion, columns: dict, dt: list, independent,
     numeric = np.array([[tape.values(x)[0] if x != 0 else 0 for x in row] for row in A_d], dtype=complex)
     if n and rank(numeric) < n:
         raise Unsupported("the rows do not determine the dependent rates from the independent ones")
-    solver = Solver(tape, A_d, on_spheres(motion, system), turn)
+    solver = Solver(tape, A_d, on_spheres(motion, on), turn)
     beta, along = {}, {qi: {} for qi in (*independent, None)}
     for qi in independent:
         for qd, x in zip(dependent, solver.solve([-columns[qi][i] for i in range(n)], along[qi])):
@@ -225,7 +227,7 @@ def _along(solver: Solver, heading: tuple | None, values: dict) -> dict:
     return {heading[0]: y[0], heading[1]: y[1]}
 
 
-def on_spheres(motion: Motion, system: System):
+def on_spheres(motion: Motion, kept: tuple[Sphere, ...]):
     """A squared row length read on the spheres the system keeps its coordinates on (gacli.mechanics
     .spheres), or None without such. Euler parameters' rows (body rates 2 G(e) ė and the unit norm
     e·ė = 0) are orthogonal, of squared length 4 e·e and e·e, and e·e = 1 is the system's own
@@ -233,14 +235,13 @@ def on_spheres(motion: Motion, system: System):
     lengths cost a sum of squares and a division (a top in a quaternion frame: 73 → 61 operations
     after SymPy's cse, Kane 64). The closed forms keep e·e; both agree on the sphere, where the motion is
     (tests/test_program.py, tests/test_generated_numeric.py compare them there)."""
-    kept = spheres(system)
     if not kept:
         return None
     tape = motion.tape
 
     def length(e: sp.Expr) -> sp.Expr:
         on = read_on(tape.closed(e), kept)
-        return e if on is e or on.free_symbols & {x for s in kept for x in s.symbols} else tape.let(on)
+        return e if on is None else tape.let(on)
 
     return length
 
