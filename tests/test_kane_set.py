@@ -60,9 +60,10 @@ def test_generated_code_agrees_with_kane_and_costs_no_more(name):
 # polynomials e·e = 1 shortens only when code reads them on the file's own constraint, a chain of
 # relative angles written out, its angle sums as sums or multiplied out (read as frames), a spring and a damper from a hook to a
 # quaternion body's corner (forces along the line, not a potential and a work form in e), a strut between
-# two moving bodies on a rolling ship (the line along the frame both ends hang from).
+# two moving bodies on a rolling ship (the line along the frame both ends hang from), a five-bar whose
+# coupler hangs from its crank (the loop's rows turned along the coupler's angle sum, q₃ + q₄).
 VARIANTS = ["cart_chain3_springs", "ball_quaternion", "qtop_about", "gyrostat_quat_f1", "free_quat_loads_f1",
-            "chain4_format1", "quat_spring_damper", "chain4_expanded", "pan_tilt"]
+            "chain4_format1", "quat_spring_damper", "chain4_expanded", "pan_tilt", "l3_five_bar"]
 
 
 @pytest.mark.parametrize("name", VARIANTS)

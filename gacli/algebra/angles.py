@@ -75,14 +75,16 @@ def reduced(expr: sp.Expr) -> sp.Expr:
     return relative(trig.reduce(sp.expand(expr), cancel=True))
 
 
-def reduced_by(expr: sp.Expr, rates: list[sp.Symbol]) -> sp.Expr:
-    """:func:`reduced` one product of ``rates`` at a time: each term of a loop's velocity-product
-    term holds the angles of one link, which only apart are written through their differences."""
+def reduced_by(expr: sp.Expr, rates: list[sp.Symbol], each=None) -> sp.Expr:
+    """:func:`reduced` (or ``each``) one product of ``rates`` at a time: each term of a loop's
+    velocity-product term holds the angles of one link, which only apart are written through their
+    differences."""
+    each = each or reduced
     groups: dict[sp.Expr, list[sp.Expr]] = {}
     for term in sp.Add.make_args(sp.expand(expr)):
         rest, rate = term.as_independent(*rates, as_Add=False)
         groups.setdefault(rate, []).append(rest)
-    return sp.Add(*(rate * reduced(sp.Add(*rest)) for rate, rest in groups.items()))
+    return sp.Add(*(rate * each(sp.Add(*rest)) for rate, rest in groups.items()))
 
 
 def _through(expr: sp.Expr, kept: sp.Symbol, gone: sp.Symbol, sense: int) -> sp.Expr:

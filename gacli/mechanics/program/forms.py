@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from gacli.algebra import angles
+from gacli.algebra import angles, turns
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.algebra.fastdiff import jacobian_rows
@@ -172,7 +172,8 @@ def _turned_rest(rows: FormRows, system: System) -> list[sp.Expr]:
     derivative, rates = closed_time_derivative(system)
     out = [sp.Add(*(derivative(c) * S.rate(q) for q, c in f.coefficients), derivative(f.dt)) for f in rows.stated]
     for i, j, first, second in rows.turns:
-        out[i], out[j] = (angles.reduced_by(sp.cos(p) * out[i] + sp.sin(p) * out[j], rates) for p in (first, second))
+        out[i], out[j] = (angles.reduced_by(sp.cos(p) * out[i] + sp.sin(p) * out[j], rates, _shortest)
+                              for p in (first, second))
     return out
 
 
@@ -194,16 +195,37 @@ def _zero(e: sp.Expr) -> bool:
     return vanishes(e, simplify=False)
 
 
-def _moved(e: sp.Expr, angle: sp.Symbol) -> sp.Expr:
-    """e at ``angle`` + 0.37 less e: zero when e does not depend on the angle."""
-    return e.xreplace({angle: angle + sp.Rational(37, 100)}) - e
+def _moved(e: sp.Expr, angle: sp.Expr) -> sp.Expr:
+    """e at ``angle`` + 0.37 less e (the angle's first coordinate moved, the others held): zero when e
+    does not depend on the angle."""
+    first = min(angle.free_symbols, key=lambda s: s.name)
+    return e.xreplace({first: first + sp.Rational(37, 100) / angle.coeff(first)}) - e
 
 
-def _angles(a: Form, b: Form) -> list[sp.Symbol]:
-    """The angles whose sine or cosine the two rows' coefficients hold, sorted by name."""
+def _angles(a: Form, b: Form) -> list[sp.Expr]:
+    """The angles whose sine or cosine the two rows' coefficients hold, sorted by name: coordinates,
+    and sums of them where a coefficient is a sum of turns (a link turned by q₃ + q₄ written out as
+    sin q₃ cos q₄ + cos q₃ sin q₄, gacli.algebra.turns)."""
     exprs = [c for f in (a, b) for _, c in f.coefficients]
     found = {n.args[0] for n in postorder(exprs) if isinstance(n, (sp.sin, sp.cos)) and n.args[0].is_Symbol}
-    return sorted(found, key=lambda s: s.name)
+    for e in map(_folded, exprs):
+        found |= {n.args[0] for n in sp.preorder_traversal(e) if isinstance(n, (sp.sin, sp.cos))
+                  and _whole(n.args[0])}
+    return sorted(found, key=sp.default_sort_key)
+
+
+def _whole(angle: sp.Expr) -> bool:
+    """A coordinate, or a sum of coordinates with whole coefficients."""
+    return angle.is_Symbol or (angle.is_Add and all(t.is_Symbol or (t.is_Mul and len(t.args) == 2
+                               and t.args[0].is_Integer and t.args[1].is_Symbol) for t in angle.args))
+
+
+def _folded(e: sp.Expr) -> sp.Expr:
+    """``e`` as one sum of turns in the angles it holds (gacli.algebra.turns), or as it is."""
+    held = sorted({s for n in sp.preorder_traversal(e) if isinstance(n, (sp.sin, sp.cos))
+                   for s in n.free_symbols}, key=lambda s: s.name)
+    out = turns.folded(e, held) if held else None
+    return e if out is None else out
 
 
 def _combined(a: Form, b: Form, first: sp.Expr, second: sp.Expr) -> tuple[Form, Form]:
@@ -212,10 +234,15 @@ def _combined(a: Form, b: Form, first: sp.Expr, second: sp.Expr) -> tuple[Form, 
 
     def combined(phase: sp.Expr) -> Form:
         x, y = sp.cos(phase), sp.sin(phase)
-        pairs = ((n, angles.reduced(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
-        return Form(tuple((n, e) for n, e in pairs if e != 0), angles.reduced(x * a.dt + y * b.dt))
+        pairs = ((n, _shortest(x * a.coefficient(n) + y * b.coefficient(n))) for n in names)
+        return Form(tuple((n, e) for n, e in pairs if e != 0), _shortest(x * a.dt + y * b.dt))
 
     return combined(first), combined(second)
+
+
+def _shortest(e: sp.Expr) -> sp.Expr:
+    """``e`` reduced (gacli.algebra.angles) or folded into a sum of turns, whichever is shorter."""
+    return min((angles.reduced(e), _folded(e)), key=lambda x: (sp.count_ops(x), sp.default_sort_key(x)))
 
 
 def _score(forms: list[Form], dependent: list[str]) -> tuple[int, int]:
