@@ -22,7 +22,7 @@ from gacli.algebra.graph import free_symbols
 from gacli.display.named import identifier, label_name, point_words
 from gacli.display.report import derivation_report, long_form
 from gacli.numeric import Program
-from gacli.mechanics.spheres import spheres
+from gacli.numeric.spheres import spheres
 from gacli.pipeline import run
 from gacli.read.expr.build import Scope, build
 from gacli.read.expr.parser import parse

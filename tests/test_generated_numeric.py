@@ -21,7 +21,7 @@ from scipy.integrate import solve_ivp
 from conftest import SYSTEMS, derived, evaluate
 from gacli.algebra import symbols as S
 from gacli.emit.naming import layout
-from gacli.mechanics.spheres import spheres
+from gacli.numeric.spheres import spheres
 from test_emit_c import COMPILERS, CLibrary, compile_c
 from test_emit_python import EXTRA, extra, write_python
 

@@ -22,7 +22,7 @@ from gacli.algebra.graph import free_symbols
 from gacli.loader.loading import load, loads
 from gacli.mechanics.equations import derive
 from gacli.mechanics.program import Program, build_program, inline, unsupported
-from gacli.mechanics.spheres import spheres
+from gacli.numeric.spheres import spheres
 from gacli.numeric import Program as Evaluator
 from gacli.numeric.parameters import parameter_values
 from gacli.read.reader import IDENTIFIER

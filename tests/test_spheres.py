@@ -1,4 +1,4 @@
-"""The spheres a system keeps its coordinates on (gacli.mechanics.spheres), and code read on them."""
+"""The spheres a system keeps its coordinates on (gacli.numeric.spheres), and code read on them."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import sympy as sp
 
 from gacli.loader.loading import loads
 from gacli.algebra.spheres import remainder_on
-from gacli.mechanics.spheres import spheres
+from gacli.numeric.spheres import spheres
 
 FREE_BODY = """
 gacli: 1

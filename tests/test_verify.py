@@ -6,10 +6,13 @@ import ast
 import dataclasses
 import importlib
 import inspect
+from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
+
+import gacli
 from conftest import SYSTEMS, derived
 
 from gacli.algebra import symbols as S
@@ -442,3 +445,11 @@ def test_a_derivation_that_cannot_be_evaluated_is_said_so_not_measured(tmp_path)
     assert result.exit_code == 1 and "Traceback" not in result.output
     assert "could not be evaluated" in result.output
     assert "relative difference inf" not in result.output and "= inf" not in result.output
+
+
+def test_a_ball_in_a_quaternion_frame_with_an_offset_centre_is_verified_on_its_sphere():
+    """Its rolling row along the normal vanishes only where e·e = 1: verify drew coordinates off that
+    sphere and ranked the rows there, kept the row, and failed equations that agree with Kane."""
+    system = gacli.load(str(Path(__file__).parent / "cases" / "ball_quaternion_offset.yaml"))
+    report = V.verify(system, gacli.derive(system), samples=5)
+    assert report.passed, "\n".join(V.format_report(report))

@@ -6,7 +6,7 @@ squared row length 4 e·e is 4. The remainder of a polynomial by x·x − r²
 (x_0² and its higher powers written through r² − x_1² − …) is one normal
 form of its values on the sphere. The loader reads a quaternion frame's
 moved inertia so (gacli.loader.inertia), the program its rows' squared
-lengths and generated code its polynomials (gacli.mechanics.spheres names
+lengths and generated code its polynomials (gacli.numeric.spheres names
 which spheres a system keeps).
 """
 

@@ -59,7 +59,7 @@ def _quaternions_without_rates(system: System) -> list[Diagnostic]:
 def _norms_by_their_differential(system: System) -> list[Diagnostic]:
     """A Pfaffian row Σ x_i dx_i = 0 over coordinates keeps x·x at its starting value, which the file
     does not name: the kinematics divide by x·x (Euler parameters' ė = ½ Eᵀ ω / e·e), where the
-    finite constraint x·x = 1 lets generated code read on the unit sphere (gacli.mechanics.spheres).
+    finite constraint x·x = 1 lets generated code read on the unit sphere (gacli.numeric.spheres).
     A note: the row is right as it stands."""
     out = []
     for i, c in enumerate(system.constraints):

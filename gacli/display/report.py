@@ -62,7 +62,7 @@ def freedom(d: Derivation) -> Section:
     ell = rows_used(d)
     how = "as given in the file" if s.independent is not None else "chosen automatically"
     dependent = dependent_rows(d)
-    why = f" (the rolling contacts give {rank_note(len(s.constraints), dependent)})" if dependent else ""
+    why = f" ({rank_note(len(s.constraints), dependent)})" if dependent else ""
     return Section("Degrees of freedom", (
         f"k = n + p - d - l = {n} + {p} - {dq} - {ell} = {d.k}",
         f"n = {n} coordinates, p = {p} quasi-coordinates (d = {dq} defined by a differential), "

@@ -82,7 +82,7 @@ def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
 
 
 def _on_spheres(inlined: list[CodeEquations], spheres: tuple, tidied) -> list[CodeEquations]:
-    """Each inlining read on the spheres the motion keeps to (gacli.mechanics.spheres), then factored
+    """Each inlining read on the spheres the motion keeps to (gacli.numeric.spheres), then factored
     or tidied: the polynomials in Euler parameters that e·e = 1 shortens (a top's m l² (e·e)², a
     gyrostat's offset wheels written with direction cosines: 283 → 175 operations, Kane 263)."""
     on = _once(lambda e: remainder_on(e, spheres))

@@ -24,7 +24,7 @@ from gacli.errors import Diagnostic, SystemFileError
 from gacli.algebra.graph import is_small
 from gacli.algebra.matrices import nonzero, rank, solve_linear
 from gacli.model import Form, System
-from gacli.mechanics.spheres import on_spheres
+from gacli.numeric.spheres import on_spheres
 from gacli.numeric.samples import SEED, random_point
 
 

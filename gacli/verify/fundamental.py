@@ -19,6 +19,7 @@ from gacli.algebra import symbols as S
 from gacli.algebra.canonical import mul
 from gacli.model import Form, System
 from gacli.numeric.compiled import Compiled
+from gacli.numeric.spheres import scaled_onto, spheres
 
 DEFAULT_SEED = 1410
 DPS = 30                  # working precision of the numerical check
@@ -50,6 +51,9 @@ class FundamentalEquations:
     A: sp.ImmutableMatrix
     a0: sp.ImmutableMatrix
     relation_rest: sp.ImmutableMatrix
+    # The spheres the file keeps coordinates on (Euler parameters, gacli.numeric.spheres): rows are
+    # ranked there, where the motion is.
+    spheres: tuple = ()
 
 
 def function_rates(system: System) -> dict[sp.Symbol, sp.Symbol]:
@@ -180,7 +184,7 @@ def fundamental_equations(system: System) -> FundamentalEquations:
         names=tuple(names), relations=tuple(r for r, _ in rows), constraint_count=len(system.constraints),
         mass=sp.ImmutableMatrix(mass), inertial=sp.ImmutableMatrix(inertial),
         loads=sp.ImmutableMatrix(_load_terms(system, motion)), A=sp.ImmutableMatrix(A),
-        a0=sp.ImmutableMatrix(a0), relation_rest=sp.ImmutableMatrix(relation_rest),
+        a0=sp.ImmutableMatrix(a0), relation_rest=sp.ImmutableMatrix(relation_rest), spheres=spheres(system),
     )
 
 
@@ -210,7 +214,7 @@ def solve_least_squares(K: mpmath.matrix, b: mpmath.matrix) -> tuple[mpmath.matr
 def redundant_relations(fundamental: FundamentalEquations, seed: int = DEFAULT_SEED) -> tuple[int, ...]:
     """Rows of A that repeat the rows before them (e.g. two wheels on one axle).
 
-    Decided at a random configuration, at 30 digits: a generic rank. Such a
+    Decided at a random configuration on the file's spheres, at 30 digits: a generic rank. Such a
     row changes no acceleration; its multiplier is not determined (the
     reaction is statically indeterminate between it and the rows it repeats).
     """
@@ -221,6 +225,7 @@ def redundant_relations(fundamental: FundamentalEquations, seed: int = DEFAULT_S
     symbols = sorted(A.free_symbols, key=lambda s: s.name)
     with mpmath.workdps(DPS):
         point = {s: mpmath.mpf(rng.uniform(0.4, 1.6)) for s in symbols}
+        point.update({s: mpmath.mpf(v) for s, v in scaled_onto(dict(point), fundamental.spheres, DPS + 5).items()})
         values = Compiled({"A": A})(point)["A"]
         numeric = [[values[i, j] for j in range(A.cols)] for i in range(A.rows)]
         kept: list[list] = []

@@ -20,6 +20,7 @@ from gacli.algebra import symbols as S
 from gacli.model import System
 from gacli.numeric import precise_parameter_values, sample_parameters
 from gacli.numeric.compiled import Compiled
+from gacli.numeric.spheres import scaled_onto
 from gacli.algebra.readable import displayable
 from gacli.verify.fundamental import (
     DEFAULT_SEED, DPS, FUNCTION_ORDERS, column, fundamental_equations, kkt, redundant_relations, solve_least_squares,
@@ -144,6 +145,7 @@ class _Run:
         values: dict = precise_parameter_values(system, sample, DPS + 5)
         self.bad_sample = self.bad_sample or sample.problem
         values.update({S.value(c.name): mpmath.mpf(rng.uniform(0.3, 1.7)) for c in system.coordinates})
+        self._on_spheres(values)
         functions = [S.rate(f.name, o) for f in system.free_functions for o in range(FUNCTION_ORDERS + 1)]
         inputs = [S.value(i.name) for i in system.inputs]
         values.update({s: mpmath.mpf(rng.uniform(-1.5, 1.5)) for s in functions + inputs})
@@ -151,6 +153,13 @@ class _Run:
         values.update({S.rate(n): mpmath.mpf(rng.uniform(-1.5, 1.5)) for n in self.independent})
         values.update({a: mpmath.mpf(rng.uniform(-1.5, 1.5)) for a in self.speed_rates})
         return values, sample.problem
+
+    def _on_spheres(self, values: dict) -> None:
+        """Coordinates the file keeps on a sphere (Euler parameters' e·e = 1) scaled onto it, in
+        place: the motion is there, and the derivation reads its rows there (a rolling row along the
+        normal of a ball in a quaternion frame vanishes only on it)."""
+        placed = scaled_onto(dict(values), self.fundamental.spheres, DPS + 5)
+        values.update({x: mpmath.mpf(placed[x]) for x in placed if placed[x] is not values[x]})
 
     def _admissible(self, values: dict) -> None:
         """The dependent rates from the relations A ṙ + a₀ = 0, in place."""

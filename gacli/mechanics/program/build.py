@@ -36,7 +36,7 @@ from gacli.mechanics.program.support import Unsupported
 from gacli.mechanics.program.tape import Tape
 from gacli.mechanics.program.units import units
 from gacli.mechanics.program.vectors import ONE, Pass, dot
-from gacli.mechanics.spheres import spheres
+from gacli.numeric.spheres import spheres
 from gacli.model import System
 
 

@@ -34,7 +34,7 @@ class Program:
     # Q of eq. (14.13), k entries over the assignments, for the printout alone (not an output: code
     # never computes it); None where it would read an assignment the outputs do not need.
     generalized_forces: tuple[sp.Expr, ...] | None = None
-    # The spheres the system keeps coordinates on (gacli.mechanics.spheres): code may read its
+    # The spheres the system keeps coordinates on (gacli.numeric.spheres): code may read its
     # polynomials on them, where the motion is.
     spheres: tuple = ()
 

@@ -9,7 +9,8 @@ length 4 e·e, which is 4 there, and Kane's explicit ½ Eᵀ ω assumes the same
 This module names the spheres once, for every place that reads on them
 (gacli.algebra.spheres): the numeric point that ranks the rows
 (gacli.mechanics.rates), the program's solver (gacli.mechanics.program.build),
-generated code (gacli.mechanics.code) and the tests' random states.
+generated code (gacli.mechanics.code), and the random states that verify and
+the tests draw: the equations hold where the motion is, on the sphere.
 
 A Pfaffian row e·de = 0 alone keeps e·e constant, not equal to 1, so it
 names no sphere (docs/program.md, "Divisions in generated code").
@@ -58,16 +59,22 @@ def _stated(relation: sp.Expr, coordinates: set) -> Sphere | None:
     return Sphere(tuple(moving), sp.cancel(-b / a))
 
 
-def on_spheres(point: dict, system: System) -> dict:
-    """``point`` with each sphere's coordinates scaled onto it, where the rows hold: a ball in a
-    quaternion frame has a rolling row along the normal that vanishes only there (its centre's height
-    is r whatever the attitude), and counted off it, it took a degree of freedom."""
-    for sphere in spheres(system):
+def on_spheres(point: dict, system: System, digits: int = 20) -> dict:
+    """``point`` with each sphere's coordinates scaled onto it (to ``digits``), where the rows hold: a
+    ball in a quaternion frame has a rolling row along the normal that vanishes only there (its
+    centre's height is r whatever the attitude), and counted off it, it took a degree of freedom."""
+    return scaled_onto(point, spheres(system), digits)
+
+
+def scaled_onto(point: dict, kept: tuple[Sphere, ...], digits: int = 20) -> dict:
+    """:func:`on_spheres` for spheres already named; values of any numeric type in, SymPy Floats out for
+    the coordinates moved."""
+    for sphere in kept:
         if not all(x in point for x in sphere.symbols):
             continue
-        radius2 = sphere.radius2.xreplace(point)
+        radius2 = sphere.radius2.xreplace({k: sp.sympify(v) for k, v in point.items()})
         if not (radius2.is_number and radius2.is_positive):  # no real point on it: nothing to scale
             continue
-        norm = sp.sqrt(sum(point[x] ** 2 for x in sphere.symbols) / radius2)
-        point.update({x: sp.Float(point[x] / norm, 20) for x in sphere.symbols})
+        norm = sp.sqrt(sum(sp.sympify(point[x]) ** 2 for x in sphere.symbols) / radius2)
+        point.update({x: sp.Float(sp.sympify(point[x]) / norm, digits) for x in sphere.symbols})
     return point
