@@ -218,3 +218,13 @@ def test_sines_and_cosines_of_a_difference_are_compacted_where_they_stand():
     assert sp.sin(th - tt) in compact.atoms(sp.sin) and compact.count_ops() < row.count_ops()
     point = {th: 0.7, tt: -0.4, b: 1.3, x: 0.2, y: 2.1}
     assert abs(float((compact - row).subs(point))) < 1e-12
+
+
+def test_a_loops_dependent_rate_over_a_sine_is_one_quotient_of_sines():
+    """A four-bar's rate solved from its rows turned along the coupler: its numerator over the
+    dead point's sine is one sine too, sin(θ₁ − θ₃), as by hand."""
+    q1, q2, q3, l1, l2 = sp.symbols("q1 q2 q3 l1 l2")
+    u = sp.Symbol("dot(q1)")
+    solved = -u * l1 * (sp.sin(q1 - q2) * sp.cos(q2 - q3) / sp.sin(q2 - q3) + sp.cos(q1 - q2)) / l2
+    shown = Tidy()(solved)
+    assert shown == -u * l1 * sp.sin(q1 - q3) / (l2 * sp.sin(q2 - q3))

@@ -156,8 +156,8 @@ def readable(expr: sp.Expr) -> sp.Expr:
 
 
 def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
-    """N/D as a careful person writes a quotient: D the product of the sums in the denominators
-    (L − c cos δ of a steered wheel), N collected (:func:`collected`); None when there is no such
+    """N/D as a careful person writes a quotient: D the product of the sums and functions in the
+    denominators (L − c cos δ of a steered wheel, a loop's sin(θ₂ − θ₃)), N collected (:func:`collected`); None when there is no such
     sum or N would multiply out to more than COLLECT_TERMS terms.
 
     As derived, the terms of an entry keep their own denominators, 1/D and 1/D², each
@@ -172,10 +172,12 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     sums, monomials = [], []
     for factor in sp.Mul.make_args(factor_terms(denominator)):
         base = factor.base if factor.is_Pow else factor
-        (sums if base.is_Add else monomials).append(factor)
+        (sums if base.is_Add or isinstance(base, sp.Function) else monomials).append(factor)
     if not sums:
         return None
-    numerator = trig.reduce(sp.expand(numerator), cancel=True)
+    # Over a sine the numerator may be one too: a loop's dependent rate, (sin(θ₁ − θ₂) cos(θ₂ − θ₃)
+    # + cos(θ₁ − θ₂) sin(θ₂ − θ₃))/sin(θ₂ − θ₃), is sin(θ₁ − θ₃)/sin(θ₂ − θ₃).
+    numerator = angle_sums_compacted(trig.reduce(sp.expand(numerator), cancel=True))
     return collected(sp.expand(numerator), sp.Mul(*monomials)) / sp.Mul(*sums)
 
 
