@@ -301,14 +301,23 @@ def _units(system: System, motion: Motion, passes: Passes, substitution: dict, s
     tape.stage = "body setup"
     groups = units(motion.tree, motion.links, system.frames.bodies, coordinates, passes.partial)
     tape.stage = "loads"
-    loads = system.frames.loads + line_loads(motion, passes.actual, system.frames.lines)
-    shares, loose = distribute(motion.tree, motion.links, groups, loads, substitution, coordinates)
+    lines = line_loads(motion, passes.actual, system.frames.lines)
+    # At its point a line's force costs a dot product per speed; with the units, a moment r × f and f
+    # read twice: the point is cheaper for few speeds (a crank-rocker's spring: 151 -> 137 operations,
+    # Kane 131), the units for a free body's six (a spring at a corner: 129 against 164).
+    few = len(passes.partial) <= LINE_POINT_SPEEDS
+    shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads + (() if few else lines),
+                               substitution, coordinates, lines if few else ())
     for u, share in zip(groups, shares):
         assemble(motion, u, share, passes, sums)
     tape.stage = "F"
-    for point, f in loose:
+    for point, f, frame in loose:
         for r, p in enumerate(passes.partial):
-            sums.load(r, tape.let(dot(motion.velocity(point, p, motion.links[point].frame), f)))
+            sums.load(r, tape.let(dot(motion.velocity(point, p, frame), f)))
+
+
+# Speeds up to which a line's force off its unit's centre does its work at its point (loads.distribute).
+LINE_POINT_SPEEDS = 3
 
 
 def _potential_and_work(system: System, motion: Motion, passes: Passes, at_root: dict, substitution: dict,

@@ -49,8 +49,12 @@ def along(tree: FrameTree, vector: FrameVector, frame: str, rates: dict) -> tupl
 
 
 def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], loads: tuple[Load, ...],
-               rates: dict, coordinates: set) -> tuple[list[UnitLoads], list[tuple[str, tuple]]]:
-    """Each unit's loads, and the forces at points of no unit [(point, components along its frame)]."""
+               rates: dict, coordinates: set, lines: tuple[Load, ...] = ()
+               ) -> tuple[list[UnitLoads], list[tuple[str, tuple, str]]]:
+    """Each unit's loads, and the forces at points of no unit [(point, components, the frame they are
+    along)]. The forces of ``lines`` (one frame each) stay at their points unless at a unit's centre:
+    their work is f·V_P, as Kane takes it, where the resultant and moment read f twice, (V_G + Ω × r)·f
+    (a spring at a rocker's tip: l f_y/2 each time)."""
     shares = [UnitLoads() for _ in units]
     loose = []
     for load in (_spelled_out(load, links) for load in loads):
@@ -61,7 +65,7 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
         i, lever = _carrier(tree, links, units, load.point, coordinates)
         if i is None:
             frame = links[load.point].frame if load.point in links else INERTIAL
-            loose.append((load.point, along(tree, load.vector, frame, rates)))
+            loose.append((load.point, along(tree, load.vector, frame, rates), frame))
             continue
         for source, components in load.vector.terms:
             components = tuple(c.xreplace(rates) for c in components)
@@ -69,6 +73,13 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
         if lever is not None:
             f = along(tree, load.vector, units[i].frame, rates)
             shares[i].moment = add(shares[i].moment, cross(tuple(lever), f))
+    for load in lines:
+        i, lever = _carrier(tree, links, units, load.point, coordinates)
+        if i is not None and lever is None:
+            shares[i].forces[load.vector.terms[0][0]] = add(shares[i].forces.get(load.vector.terms[0][0], ZV),
+                                                             load.vector.terms[0][1])
+        else:
+            loose.append((load.point, load.vector.terms[0][1], load.vector.terms[0][0]))
     return shares, loose
 
 
