@@ -207,3 +207,18 @@ def test_only_short_divisors_are_divided_out():
     assert _rational(x * e[0] ** 2 / norm)
     many = sp.symbols("a0:20", real=True)
     assert not _rational(x / (norm + sum(a * b for a, b in zip(many, many[1:]))))
+
+
+def test_a_loops_dead_point_is_told_from_a_single_angles_divisor():
+    """The display's simplifier is not tried on code that divides by the sine of a combination of
+    angles (a linkage's l sin(θ_a − θ_b)), where it never shortened; a wheel's cos θ keeps it."""
+    from gacli.mechanics.code import CodeEquations, _over_a_loop
+
+    q2, q3, th, l, m = sp.symbols("q2 q3 theta l m")
+
+    def code(entry):
+        return CodeEquations("program", (), (((0, 0), entry),), (entry,), 0)
+
+    assert _over_a_loop(code(m / (l * sp.sin(q2 - q3)) ** 2))
+    assert not _over_a_loop(code(m / sp.cos(th) ** 2))
+    assert not _over_a_loop(code(m * sp.sin(q2 - q3)))

@@ -220,6 +220,7 @@ def _whole(angle: sp.Expr) -> bool:
                                and t.args[0].is_Integer and t.args[1].is_Symbol) for t in angle.args))
 
 
+@functools.lru_cache(maxsize=1024)  # the same coefficients recur in each turning and each build
 def _folded(e: sp.Expr) -> sp.Expr:
     """``e`` as one sum of turns in the angles it holds (gacli.algebra.turns), or as it is."""
     held = sorted({s for n in sp.preorder_traversal(e) if isinstance(n, (sp.sin, sp.cos))
@@ -240,6 +241,7 @@ def _combined(a: Form, b: Form, first: sp.Expr, second: sp.Expr) -> tuple[Form, 
     return combined(first), combined(second)
 
 
+@functools.lru_cache(maxsize=1024)
 def _shortest(e: sp.Expr) -> sp.Expr:
     """``e`` reduced (gacli.algebra.angles) or folded into a sum of turns, whichever is shorter."""
     return min((angles.reduced(e), _folded(e)), key=lambda x: (sp.count_ops(x), sp.default_sort_key(x)))
