@@ -220,9 +220,17 @@ def _whole(angle: sp.Expr) -> bool:
                                and t.args[0].is_Integer and t.args[1].is_Symbol) for t in angle.args))
 
 
+# Tree nodes of a row's coefficient up to which it is folded into a sum of turns: a link's lever
+# l (sin q₃ cos q₄ + cos q₃ sin q₄) has 15; a rattleback's hand-derived rows, of about 200, took 9 s
+# to write through e^(iq) for nothing.
+FOLDED_NODES = 80
+
+
 @functools.lru_cache(maxsize=1024)  # the same coefficients recur in each turning and each build
 def _folded(e: sp.Expr) -> sp.Expr:
     """``e`` as one sum of turns in the angles it holds (gacli.algebra.turns), or as it is."""
+    if not is_small(e, FOLDED_NODES):
+        return e
     held = sorted({s for n in sp.preorder_traversal(e) if isinstance(n, (sp.sin, sp.cos))
                    for s in n.free_symbols}, key=lambda s: s.name)
     out = turns.folded(e, held) if held else None
