@@ -221,3 +221,17 @@ def test_a_printout_forms_the_closed_forms_only_where_they_may_print_written_out
     assert run(twins / "tricycle_front_drive.yaml", needs=PRINTOUT).derivation.closed
     car = run(twins / "ackermann_car.yaml", needs=PRINTOUT).derivation
     assert not car.closed and car.printable
+
+
+def test_forms_read_off_that_miss_the_bound_by_little_are_named_without_forming_the_closed_forms(monkeypatch):
+    """A five-bar's forms read off its program print 6,486 characters untidied for a bound of 5,125: the
+    closed forms could not print shorter enough to matter, and forming them cost 2 s of its derive."""
+    from gacli import pipeline
+
+    def closed(*args, **kwargs):
+        raise AssertionError("the closed forms were formed")
+
+    monkeypatch.setattr(pipeline, "derive", closed)
+    run = pipeline.run(ROOT / "benchmarks" / "kane_set" / "variants" / "linkages" / "l3_five_bar.yaml",
+                       needs=pipeline.PRINTOUT)
+    assert not run.derivation.closed and run.derivation.printable

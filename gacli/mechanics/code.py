@@ -58,7 +58,22 @@ class CodeEquations:
 
 def from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     """The program's cheapest inlining (:attr:`Program.inlinings`); past the trees
-    SymPy's cse takes, its operations are the program's own (what the one-pass CSE counts to)."""
+    SymPy's cse takes, its operations are the program's own (what the one-pass CSE counts to).
+    Remembered for the last few programs: the builder judges the programs it chose between by it."""
+    for seen, seen_names, code in _CODE:
+        if seen is program and seen_names == names:
+            return code
+    code = _from_program(program, names)
+    _CODE[:] = [(program, names, code), *_CODE[:_REMEMBERED - 1]]
+    return code
+
+
+# (program, names, code) of the last few programs asked for (the builder's near-cheapest ones).
+_CODE: list = []
+_REMEMBERED = 6
+
+
+def _from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
     forms, small = program.inlinings
     if not small:
         return _inlined(program, names, *forms[0][0], operations=program_operations(program))
@@ -245,8 +260,9 @@ def program_for(system: System) -> Program | None:
     hit = _PROGRAMS.get(key)
     if hit is not None and hit[0] is system.bodies and hit[1] == system.independent:
         return hit[2]
+    names = tuple(c.name for c in system.coordinates)
     try:
-        program = build_program(system)
+        program = build_program(system, judge=lambda p: from_program(p, names).operations)
     except Exception:  # noqa: BLE001 - see above
         program = None
     _PROGRAMS[key] = (system.bodies, system.independent, program)

@@ -30,19 +30,20 @@ from gacli.model import System
 __all__ = ["Program", "build_program", "inline", "unsupported"]
 
 
-def _attempt(system: System) -> Program | str:
+def _attempt(system: System, judge=None) -> Program | str:
     reason = static_reason(system)
     if reason is not None:
         return reason
     try:
-        return program_of(system)
+        return program_of(system, judge)
     except Unsupported as exc:
         return str(exc)
 
 
-def build_program(system: System) -> Program | None:
-    """The program of ``system``, or None when it is outside what the builder takes (see :func:`unsupported`)."""
-    result = _attempt(system)
+def build_program(system: System, judge=None) -> Program | None:
+    """The program of ``system``, or None when it is outside what the builder takes (see :func:`unsupported`);
+    ``judge``: what generated code would cost, for the programs built that cost nearly the least."""
+    result = _attempt(system, judge)
     return result if isinstance(result, Program) else None
 
 
