@@ -262,12 +262,21 @@ def program_for(system: System) -> Program | None:
         return hit[2]
     names = tuple(c.name for c in system.coordinates)
     try:
-        program = build_program(system, judge=lambda p: from_program(p, names).operations)
+        program = build_program(system, judge=lambda p: _judged(p, names))
     except Exception:  # noqa: BLE001 - see above
         program = None
     _PROGRAMS[key] = (system.bodies, system.independent, program)
     weakref.finalize(anchor, _PROGRAMS.pop, key, None)
     return program
+
+
+def _judged(program: Program, names: tuple[str, ...]) -> float:
+    """What ``program``'s generated code costs; a program whose code cannot be formed is never kept
+    for it (the builder's cheapest would otherwise be lost with it)."""
+    try:
+        return from_program(program, names).operations
+    except Exception:  # noqa: BLE001 - a judgement, not the derivation
+        return float("inf")
 
 
 # id(frame model) → (its System's bodies, independent, program): forgotten with the frame model.
