@@ -170,9 +170,12 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     if not _expands_small(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
         return None
     sums, monomials = [], []
+    # A sine in the denominator is brought over only in a small quotient (a loop's dependent rate):
+    # over a rolling robot's cos θ every entry was multiplied out for nothing (2 s of a derive).
+    over_sines = is_small(expr, SINE_DENOMINATOR_NODES)
     for factor in sp.Mul.make_args(factor_terms(denominator)):
         base = factor.base if factor.is_Pow else factor
-        (sums if base.is_Add or isinstance(base, sp.Function) else monomials).append(factor)
+        (sums if base.is_Add or (over_sines and isinstance(base, sp.Function)) else monomials).append(factor)
     if not sums:
         return None
     # Over a sine the numerator may be one too: a loop's dependent rate, (sin(θ₁ − θ₂) cos(θ₂ − θ₃)
@@ -180,6 +183,9 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     numerator = angle_sums_compacted(trig.reduce(sp.expand(numerator), cancel=True))
     return collected(sp.expand(numerator), sp.Mul(*monomials)) / sp.Mul(*sums)
 
+
+# Tree nodes of a quotient up to which a sine or cosine in its denominator is brought over too.
+SINE_DENOMINATOR_NODES = 150
 
 # Distinct sums in denominators past which no common denominator is formed: ``together``
 # multiplies them all, in time quadratic in their number (400 of them took 6 s).
