@@ -118,10 +118,9 @@ def _closed_may_print_shorter(read: Derivation) -> bool:
     CLOSED_WORTH times the bound (a tricycle's entry of 18,637 characters, which prints in 869 in closed
     form). Below it the read-off forms are named as they are: a five-bar's 6,486 characters for a
     bound of 5,125 spent 2 s of its derive forming closed forms it never printed."""
-    exprs = printed_expressions(read)
-    if not trees_within(exprs, CLOSED_WORTH * limit(read)):
-        return True
-    return sum(len(str(e)) for e in exprs) > CLOSED_WORTH * limit(read)
+    exprs, worth = printed_expressions(read), CLOSED_WORTH * limit(read)
+    # Each node prints at least one character: past ``worth`` nodes they print past it, unprinted.
+    return not trees_within(exprs, worth) or sum(len(str(e)) for e in exprs) > worth
 
 
 CLOSED_WORTH = 2

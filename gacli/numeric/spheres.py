@@ -69,12 +69,16 @@ def on_spheres(point: dict, system: System, digits: int = 20) -> dict:
 def scaled_onto(point: dict, kept: tuple[Sphere, ...], digits: int = 20) -> dict:
     """:func:`on_spheres` for spheres already named; values of any numeric type in, SymPy Floats out for
     the coordinates moved."""
+    def number(v) -> sp.Expr:  # a value of the point: a SymPy number, or a float or mpf made one
+        return v if isinstance(v, sp.Basic) else sp.Float(v, digits)
+
     for sphere in kept:
         if not all(x in point for x in sphere.symbols):
             continue
-        radius2 = sphere.radius2.xreplace({k: sp.sympify(v) for k, v in point.items()})
+        radius2 = sphere.radius2.xreplace({k: number(point[k]) for k in sphere.radius2.free_symbols if k in point})
         if not (radius2.is_number and radius2.is_positive):  # no real point on it: nothing to scale
             continue
-        norm = sp.sqrt(sum(sp.sympify(point[x]) ** 2 for x in sphere.symbols) / radius2)
-        point.update({x: sp.Float(sp.sympify(point[x]) / norm, digits) for x in sphere.symbols})
+        x = [number(point[y]) for y in sphere.symbols]
+        norm = sp.sqrt(sp.Add(*(c ** 2 for c in x)) / radius2)
+        point.update({y: sp.Float(c / norm, digits) for y, c in zip(sphere.symbols, x)})
     return point

@@ -105,7 +105,7 @@ def program_of(system: System, judge=None) -> Program:
         programs.append(_program(system, independent, None, False, above=True))
     if form_rows(system).forms:  # rows stated in N's axes may turn with a vehicle's heading
         programs += [p for g in grams if (p := _program(system, independent, None, g, columns=True)) is not None]
-    return programs[0] if len(programs) == 1 else _cheapest([p for p in programs if p is not None], judge)
+    return _cheapest(programs, judge)
 
 
 def _cheapest(programs: list[Program], judge) -> Program:
@@ -325,10 +325,10 @@ def _units(system: System, motion: Motion, passes: Passes, substitution: dict, s
     # force, over ℓ², stays with the units: at its point the printout's quotients doubled an arm's
     # derive (5.8 -> 12 s) for 8 operations.
     few = len(passes.partial) <= LINE_POINT_SPEEDS
-    springs = tuple(line for line in system.frames.lines if few and line.damping is None)
-    apart = line_loads(motion, passes.actual, springs)
-    lines = line_loads(motion, passes.actual, tuple(line for line in system.frames.lines if line not in springs))
-    shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads + lines,
+    at_points = [few and line.damping is None for line in system.frames.lines]
+    apart, along = (line_loads(motion, passes.actual, tuple(line for line, at in zip(system.frames.lines, at_points)
+                                                            if at is wanted)) for wanted in (True, False))
+    shares, loose = distribute(motion.tree, motion.links, groups, system.frames.loads + along,
                                substitution, coordinates, apart)
     for u, share in zip(groups, shares):
         assemble(motion, u, share, passes, sums)

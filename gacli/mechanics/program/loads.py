@@ -74,12 +74,12 @@ def distribute(tree: FrameTree, links: dict[str, PointLink], units: list[Unit], 
             f = along(tree, load.vector, units[i].frame, rates)
             shares[i].moment = add(shares[i].moment, cross(tuple(lever), f))
     for load in lines:
+        (frame, f), = load.vector.terms
         i, lever = _carrier(tree, links, units, load.point, coordinates)
         if i is not None and lever is None:
-            shares[i].forces[load.vector.terms[0][0]] = add(shares[i].forces.get(load.vector.terms[0][0], ZV),
-                                                             load.vector.terms[0][1])
+            shares[i].forces[frame] = add(shares[i].forces.get(frame, ZV), f)
         else:
-            loose.append((load.point, load.vector.terms[0][1], load.vector.terms[0][0]))
+            loose.append((load.point, f, frame))
     return shares, loose
 
 
