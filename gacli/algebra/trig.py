@@ -19,6 +19,8 @@ written out by the addition formulas (:mod:`gacli.algebra.angle_sums`).
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from gacli.algebra import angle_sums
@@ -365,6 +367,7 @@ def _summed(poly: Poly, multiply_out: bool = False) -> Poly:
     return out
 
 
+@functools.lru_cache(maxsize=8192)  # the same coefficients are rebuilt again by every later reduction of a tidy
 def _coefficient(total: sp.Expr) -> sp.Expr:
     """A coefficient multiplied out where that is shorter: sums of rates that cancel only so.
 
