@@ -374,3 +374,25 @@ loads:
 """)
     assert derive(system).k == 3
     _assert_taken_and_agrees(system)
+
+
+def test_a_wheel_placed_by_its_contact_in_a_quaternion_frame_is_taken():
+    # The contact point's height is zero only where e·e = 1: drawn off the sphere, the builder
+    # saw the point rise and refused the disc ("the root point moves along N's z axis").
+    system = loads("""
+gacli: 1
+name: disc_quaternion
+parameters: [m, r, g]
+coordinates: [x, y, e0, e1, e2, e3]
+quasi_coordinates: [w_1, w_2, w_3]
+independent: [w_1, w_2, w_3]
+frames:
+  disc: {quaternion: [e0, e1, e2, e3], rates: [w_1, w_2, w_3]}
+bodies:
+  disc: {mass: m, frame: disc, inertia: [m*r**2/4, m*r**2/2, m*r**2/4]}
+rolling:
+  - {body: disc, radius: r, axle: [0, 1, 0], contact: {N: [x, y, 0]}}
+loads:
+  - {force: {N: [0, 0, -m*g]}, at: disc}
+""")
+    _assert_taken_and_agrees(system)

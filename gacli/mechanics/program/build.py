@@ -48,7 +48,7 @@ def _setup(system: System, independent: tuple[str, ...] | None,
     model = system.frames
     coordinates = {c.name: S.value(c.name) for c in system.coordinates}
     time = S.time_chain(f.name for f in system.free_functions)
-    tree = FrameTree(Tape(), model.edges if model is not None else (), coordinates, time)
+    tree = FrameTree(Tape(spheres(system)), model.edges if model is not None else (), coordinates, time)
     tree.tape.stage = "rows"
     links = {p.name: p for p in model.points} if model is not None else {}
     bodies = {b.name: b for b in model.bodies} if model is not None else {}

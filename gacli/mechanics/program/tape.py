@@ -44,7 +44,10 @@ def _trivial(e: sp.Expr) -> bool:
 class Tape:
     """Assignments (symbol, expression, stage) with value numbering and numeric values at generic points."""
 
-    def __init__(self) -> None:
+    def __init__(self, spheres: tuple = ()) -> None:
+        # The generic points lie on the spheres the system keeps its coordinates on
+        # (gacli.numeric.spheres): a contact point's height that is zero only where e·e = 1 is zero.
+        self._spheres = {x: sphere for sphere in spheres for x in sphere.symbols}
         self.assignments: list[tuple[sp.Symbol, sp.Expr, str]] = []
         self.stage = ""
         self._memo: dict[sp.Expr, sp.Symbol] = {}
@@ -204,11 +207,25 @@ class Tape:
                 point[name] = evaluate(self._with(point, draw, evaluate.symbols))[0]
         self._evaluated = len(self.assignments)
 
-    @staticmethod
-    def _with(point: dict, draw: random.Random, symbols: tuple) -> dict:
+    def _with(self, point: dict, draw: random.Random, symbols) -> dict:
         """The point, with a generic value drawn for each state symbol seen for the first time
-        (``symbols`` comes sorted by name, so the draws do not depend on hashing)."""
+        (``symbols`` comes sorted by name, so the draws do not depend on hashing); a sphere's
+        coordinates all at once, scaled onto it."""
         for s in symbols:
             if s not in point:
-                point[s] = complex(draw.uniform(*SAMPLE_INTERVAL))
+                sphere = self._spheres.get(s)
+                if sphere is None:
+                    point[s] = complex(draw.uniform(*SAMPLE_INTERVAL))
+                else:
+                    self._on_sphere(point, draw, sphere)
         return point
+
+    def _on_sphere(self, point: dict, draw: random.Random, sphere) -> None:
+        radius2 = sphere.radius2
+        if radius2.free_symbols:
+            self._with(point, draw, sorted(radius2.free_symbols, key=lambda x: x.name))
+        size2 = complex(radius2.xreplace({x: sp.Float(point[x].real, 30) for x in radius2.free_symbols}))
+        values = [draw.uniform(*SAMPLE_INTERVAL) for _ in sphere.symbols]
+        scale = (size2.real / sum(v * v for v in values)) ** 0.5 if size2.real > 0 else 1.0
+        for x, v in zip(sphere.symbols, values):
+            point.setdefault(x, complex(v * scale))
