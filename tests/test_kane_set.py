@@ -66,7 +66,7 @@ def test_generated_code_agrees_with_kane_and_costs_no_more(name):
 # slider-crank written out (of two programs within 5 % of each other, the one whose code costs less).
 VARIANTS = ["cart_chain3_springs", "ball_quaternion", "qtop_about", "gyrostat_quat_f1", "free_quat_loads_f1",
             "chain4_format1", "quat_spring_damper", "chain4_expanded", "pan_tilt", "l3_five_bar",
-            "l3_cart_inverted_double", "l3_slider_crank_f1"]
+            "l3_cart_inverted_double", "l3_slider_crank_f1", "disc_quaternion"]
 
 
 @pytest.mark.parametrize("name", VARIANTS)

@@ -175,6 +175,48 @@ def _wheel_o_rate(tree: FrameTree, c: Contact, n: tuple, w: tuple) -> tuple:
     return tape.vec([-c.radius * (nd * c.inverse + x * dinv) for x, nd in zip(c.perp, ndot)])
 
 
+def lift(tree: FrameTree, links: dict, root: str | None, c: Contact | None, coordinates: set) -> str | None:
+    """The link that places the root contact's body from its contact (a body placed by ``contact``):
+    from the root, written with the coordinates, and −o at the tape's generic points. Only
+    a thin wheel's or a sphere's on N's plane, whose ö :func:`o_acceleration` forms; None otherwise."""
+    if c is None or c.plane != INERTIAL or c.tube != 0 or c.semi_axes is not None or c.point is None:
+        return None
+    if c.axis is not None and c.perp is None:
+        return None
+    for name in _chain(links, c.point, root):
+        link = links[name]
+        if link.parent == root and any(x.free_symbols & coordinates for x in link.components):
+            o = tree.express(c.o, c.frame, link.frame)
+            if all(tree.tape.vanishes(x + y) for x, y in zip(link.components, o)):
+                return name
+    return None
+
+
+def _chain(links: dict, point: str, root: str) -> list[str]:
+    out = []
+    while point is not None and point != root and point in links:
+        out.append(point)
+        point = links[point].parent
+    return out
+
+
+def o_acceleration(tree: FrameTree, c: Contact, actual: Pass, alpha: tuple) -> tuple:
+    """ö along S with the speeds' rates held (α the frame's rest α): n̈ = ṅ × ω + n × α, and o of
+    n as in :func:`o_rate`; for a wheel, d²/dt² of 1/|n − (n·a)a| by the chain rule."""
+    tape, n = tree.tape, normal(tree, c.frame, c.plane)
+    w = tree.omega(c.frame, actual)
+    ndot = tape.vec(cross(n, w))
+    nddot = tape.vec(add(cross(ndot, w), cross(n, alpha)))
+    if c.axis is None:
+        return tape.vec(scale(-c.radius, nddot))
+    pd = [ZERO if i == c.axis else ndot[i] for i in range(3)]
+    pdd = [ZERO if i == c.axis else nddot[i] for i in range(3)]
+    s = tape.let(dot(c.perp, pd))
+    dinv = tape.let(-c.inverse ** 3 * s)
+    ddinv = tape.let(-3 * c.inverse ** 2 * dinv * s - c.inverse ** 3 * (dot(pd, pd) + dot(c.perp, pdd)))
+    return tape.vec([-c.radius * (c.inverse * a + 2 * dinv * b + ddinv * x) for a, b, x in zip(pdd, pd, c.perp)])
+
+
 def velocity(tree: FrameTree, c: Contact, v_point: tuple, rates: Pass) -> tuple:
     """v_C along S for the pass: v_P + ω_S × (d + c + o) + ω_r × (c + o), ω_r = :func:`turning`."""
     cs = centre_in_s(tree, c)
