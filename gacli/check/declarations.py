@@ -25,7 +25,8 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     out = []
     for p in system.parameters:
         if S.value(p.name) not in used:
-            out.append(_warning(p.location, f"parameters.{p.name}", f"parameter '{p.name}' is not used"))
+            out.append(_warning(p.location, f"parameters.{p.name}", f"parameter '{p.name}' is not used in the equations "
+                                "(written nowhere, or only where it cancels, as a height both ends of a spring share)"))
     for i in system.inputs:
         if S.value(i.name) not in loaded:
             out.append(Diagnostic(i.location, f"input '{i.name}' is declared but no load uses it "

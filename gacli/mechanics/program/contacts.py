@@ -175,46 +175,53 @@ def _wheel_o_rate(tree: FrameTree, c: Contact, n: tuple, w: tuple) -> tuple:
     return tape.vec([-c.radius * (nd * c.inverse + x * dinv) for x, nd in zip(c.perp, ndot)])
 
 
-def lift(tree: FrameTree, links: dict, root: str | None, c: Contact | None, coordinates: set) -> str | None:
-    """The link that places the root contact's body from its contact (a body placed by ``contact``):
-    from the root, written with the coordinates, and −o at the tape's generic points. Only
-    a thin wheel's or a sphere's on N's plane, whose ö :func:`o_acceleration` forms; None otherwise."""
-    if c is None or c.plane != INERTIAL or c.tube != 0 or c.semi_axes is not None or c.point is None:
+def lift(tree: FrameTree, links: dict, c: Contact, coordinates: set, root: str | None) -> str | None:
+    """The link that places ``c``'s body from its contact point (a body placed by ``contact``): on the
+    chain above the contact's P, written with the coordinates, and −o at the tape's generic points.
+    Not an ellipsoid's, whose ö :func:`o_acceleration` does not form."""
+    if c.semi_axes is not None or c.point is None:
         return None
-    if c.axis is not None and c.perp is None:
-        return None
-    for name in _chain(links, c.point, root):
-        link = links[name]
-        if link.parent == root and any(x.free_symbols & coordinates for x in link.components):
+    point = c.point
+    while point is not None and point != root and point in links:
+        link = links[point]
+        if any(x.free_symbols & coordinates for x in link.components):
             o = tree.express(c.o, c.frame, link.frame)
             if all(tree.tape.vanishes(x + y) for x, y in zip(link.components, o)):
-                return name
+                return point
+        point = link.parent
     return None
 
 
-def _chain(links: dict, point: str, root: str) -> list[str]:
-    out = []
-    while point is not None and point != root and point in links:
-        out.append(point)
-        point = links[point].parent
-    return out
+def relative_alpha(tree: FrameTree, c: Contact, actual: Pass, alpha: tuple, gamma: Pass | None) -> tuple:
+    """The rate of the components along S of ω relative to the plane's frame P, α_S − α_P + ω_S × ω_P
+    (``alpha``: S's rest α)."""
+    if c.plane == INERTIAL:
+        return alpha
+    w_p = tree.express(tree.omega(c.plane, actual), c.plane, c.frame)
+    a_p = tree.express(tree.alpha0(c.plane, actual, gamma), c.plane, c.frame)
+    return tree.tape.vec(add(alpha, scale(-1, a_p), cross(tree.omega(c.frame, actual), w_p)))
 
 
 def o_acceleration(tree: FrameTree, c: Contact, actual: Pass, alpha: tuple) -> tuple:
-    """ö along S with the speeds' rates held (α the frame's rest α): n̈ = ṅ × ω + n × α, and o of
-    n as in :func:`o_rate`; for a wheel, d²/dt² of 1/|n − (n·a)a| by the chain rule."""
+    """ö along S with the speeds' rates held (``alpha``: :func:`relative_alpha`): n̈ = ṅ × ω + n × α,
+    ω relative to the plane, and o of n as in :func:`o_rate`; for a wheel, d²/dt² of 1/|n − (n·a)a|
+    by the chain rule."""
     tape, n = tree.tape, normal(tree, c.frame, c.plane)
-    w = tree.omega(c.frame, actual)
+    w = relative_omega(tree, c, actual)
     ndot = tape.vec(cross(n, w))
     nddot = tape.vec(add(cross(ndot, w), cross(n, alpha)))
     if c.axis is None:
         return tape.vec(scale(-c.radius, nddot))
+    tube = scale(-c.tube, nddot)  # a torus's o is a wheel's − ρ n
+    if c.perp is None:  # the wheel's plane holds the normal: the wheel's o = −r e, constant along S
+        return tape.vec(tube)
     pd = [ZERO if i == c.axis else ndot[i] for i in range(3)]
     pdd = [ZERO if i == c.axis else nddot[i] for i in range(3)]
     s = tape.let(dot(c.perp, pd))
     dinv = tape.let(-c.inverse ** 3 * s)
     ddinv = tape.let(-3 * c.inverse ** 2 * dinv * s - c.inverse ** 3 * (dot(pd, pd) + dot(c.perp, pdd)))
-    return tape.vec([-c.radius * (c.inverse * a + 2 * dinv * b + ddinv * x) for a, b, x in zip(pdd, pd, c.perp)])
+    wheel = [-c.radius * (c.inverse * a + 2 * dinv * b + ddinv * x) for a, b, x in zip(pdd, pd, c.perp)]
+    return tape.vec(add(wheel, tube))
 
 
 def velocity(tree: FrameTree, c: Contact, v_point: tuple, rates: Pass) -> tuple:

@@ -32,18 +32,21 @@ class Motion:
         self.tree, self.tape, self.coordinates = tree, tree.tape, coordinates
         self.contacts = contacts
         self.root, self.root_contact = root if root is not None else (None, None)
-        self.lift = C.lift(tree, links, self.root, self.root_contact, set(coordinates.values()))
-        self.links = links if self.lift is None else {**links, self.lift: self._lifted(links[self.lift])}
+        moving = set(coordinates.values())
+        # Each link that places a body from its contact point (a body placed by ``contact``), with its contact.
+        self.lifts = {name: c for c in contacts if (name := C.lift(tree, links, c, moving, self.root)) is not None}
+        self.links = {**links, **{name: self._lifted(links[name], c) for name, c in self.lifts.items()}}
         self._velocity: dict = {}
         self._acceleration: dict = {}
         self._odot: dict = {}
         self._reach: dict = {}
 
-    def _lifted(self, link: PointLink) -> PointLink:
+    @staticmethod
+    def _lifted(link: PointLink, c: C.Contact) -> PointLink:
         """The lift as the contact's −o along S: its rates are then −ȯ (C.o_rate, ṅ = n × ω),
         not the chain rule through the coordinates the loader wrote it in (a disc's Euler parameters
         under a square root: its x, y rates cost 213 operations, Kane's 35)."""
-        return PointLink(link.name, link.parent, self.root_contact.frame, tuple(-x for x in self.root_contact.o))
+        return PointLink(link.name, link.parent, c.frame, tuple(-x for x in c.o))
 
     def frame_of(self, point: str | None) -> str:
         """The frame a point's velocity is formed along: its last link's (the root's: its contact's S)."""
@@ -70,8 +73,8 @@ class Motion:
             c = self.root_contact
             if zero_root:
                 return ZV, c.frame
-            if c.point == self.lift:  # v_P with the root still, ω × (−o) − ȯ, left unnamed: ω × o cancels
-                lifted = self.links[self.lift]
+            if self.lifts.get(c.point) is c:  # v_P with the root still, ω × (−o) − ȯ, left unnamed: ω × o cancels
+                lifted = self.links[c.point]
                 v_point = add(cross(self.tree.omega(c.frame, rates), lifted.components), self._moving(lifted, rates))
                 return self.tape.vec(scale(-1, C.velocity(self.tree, c, v_point, rates))), c.frame
             return self.tape.vec(scale(-1, self.contact_velocity(c, rates, zero_root=True))), c.frame
@@ -93,8 +96,8 @@ class Motion:
 
     def _moving(self, link: PointLink, rates: Pass) -> tuple:
         """ṗ: the rate of the link's own components, Σ ∂p/∂q ρ_q (+ ∂p/∂t for a timed pass)."""
-        if link.name == self.lift:
-            return scale(-1, C.o_rate(self.tree, self.root_contact, rates))
+        if link.name in self.lifts:
+            return scale(-1, C.o_rate(self.tree, self.lifts[link.name], rates))
         return tuple(self._rate(x, rates) for x in link.components)
 
     def _rate(self, x: sp.Expr, rates: Pass) -> sp.Expr:
@@ -125,10 +128,11 @@ class Motion:
         p = link.components
         moving = self.tape.vec(self._moving(link, actual))
         inner = self.tape.vec(add(cross(w, p), scale(2, moving)))
-        if link.name == self.lift:  # −ö, whose α part is the rest α's, γ's share with it
-            return self.tape.vec(add(parent, cross(al, p), cross(w, inner), scale(-1, C.o_acceleration(
-                self.tree, self.root_contact, actual, al))), name=None if zero_root else ("a", point, "rest" if gamma
-                                                                                       else actual.key, link.frame)), link.frame
+        if link.name in self.lifts:  # −ö, whose α part is the rest α's, γ's share with it
+            c = self.lifts[link.name]
+            odd = C.o_acceleration(self.tree, c, actual, C.relative_alpha(self.tree, c, actual, al, gamma))
+            name = None if zero_root else ("a", point, "rest" if gamma else actual.key, link.frame)
+            return self.tape.vec(add(parent, cross(al, p), cross(w, inner), scale(-1, odd)), name=name), link.frame
         a = add(parent, cross(al, p), cross(w, inner), self._moving2(link, actual))
         if gamma is not None:
             a = add(a, self._moving(link, gamma))
