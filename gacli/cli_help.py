@@ -109,6 +109,25 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
         raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
     if steps and format not in ("text", "latex"):
         raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
+    if output is not None and format in _SEVERAL_FILES:
+        _several_files(format, str(output))
+
+
+# Formats that write several files, and the endings of their names (gacli.output: a file name given
+# for them must be one of theirs, its companions go beside it).
+_SEVERAL_FILES = {"c": (".c", ".h"), "octave": (".m",)}
+
+
+def _several_files(format: str, output: str) -> None:
+    """A file name that can be none of the format's files, refused before the derivation, not after."""
+    from gacli.output import is_directory_target
+
+    endings = _SEVERAL_FILES[format]
+    if is_directory_target(output) or output.endswith(endings):
+        return
+    raise typer.BadParameter(f"--format {format} writes several files (names ending in {' and '.join(endings)}): "
+                             "give a directory (a trailing / makes one) or the name of one of them",
+                             param_hint="--output")
 
 
 def plain_report(title: str, sections) -> str:

@@ -98,8 +98,21 @@ def test_several_files_go_beside_the_one_named(fmt, tmp_path):
 
 @pytest.mark.parametrize("fmt", SEVERAL)
 def test_several_files_never_make_a_directory_of_a_file_name(fmt, tmp_path):
-    result = derive(fmt, tmp_path / "disk.c")
-    one_message(result, "disk.c", f"{len(WRITES[fmt])} files", "trailing /")
+    name = "disk" + WRITES[fmt][0][-2:]  # ends as the format's files do, but is none of them
+    result = derive(fmt, tmp_path / name)
+    one_message(result, name, f"{len(WRITES[fmt])} files", "trailing /")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("fmt", SEVERAL)
+def test_a_name_none_of_the_files_can_have_is_a_usage_error_before_the_work(fmt, tmp_path, monkeypatch):
+    # A reviewer's --output build/nodir was refused after a 12 s derivation, with exit 1.
+    import gacli.pipeline
+
+    monkeypatch.setattr(gacli.pipeline, "run", lambda *a, **k: pytest.fail("derived before refusing"))
+    result = derive(fmt, tmp_path / "nodir")
+    assert result.exit_code == 2, result.output
+    assert "several files" in result.output and "trailing /" in result.output
     assert list(tmp_path.iterdir()) == []
 
 
