@@ -374,10 +374,21 @@ def _coefficient(total: sp.Expr) -> sp.Expr:
     Parameters' sums such as (m₁ + m₂) stay whole where multiplying them out
     would lengthen the coefficient.
     """
-    if not total.is_Add or expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
+    if not total.is_Add or not any(map(_distributes, total.args)):
+        return total  # nothing to multiply out: its terms stay as many (a loop's, over its dead point)
+    if expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
         return total
-    expanded = sp.expand(total)
+    expanded = sp.expand(total, power_base=False, power_exp=False, log=False)  # products and powers of sums alone
     return expanded if len(sp.Add.make_args(expanded)) < len(total.args) else total
+
+
+def _distributes(term: sp.Expr) -> bool:
+    """Whether a term has a sum among its factors, or a positive power of one: what multiplying out opens."""
+    for factor in sp.Mul.make_args(term):
+        base = factor.base if factor.is_Pow and factor.exp.is_positive else factor
+        if base.is_Add:
+            return True
+    return False
 
 
 def _size(poly: Poly) -> tuple[int, int]:
