@@ -15,7 +15,7 @@ from typing import Annotated, Optional
 import typer
 
 from gacli.cli_help import (
-    Group, SystemPath, choice, code_formats, derive_usage, example, formats, plain_report, show_version,
+    Group, SystemPath, choice, code_formats, derive_usage, example, formats, output_usage, plain_report, show_version,
 )
 from gacli.cli_options import usage_errors
 from gacli.cli_steady import SweepOption, register as register_steady
@@ -132,10 +132,8 @@ def derive(
 
     derive_usage(format, output, steps, reactions)
     with _boundary():
-        if output is not None:  # a device or FIFO is refused before the work, not after it
-            from gacli.output import refuse_special
-
-            refuse_special(output)
+        if output is not None:  # a device or FIFO, or a name none of the files can have: before the work
+            output_usage(format, str(output))
         with _budget(file, timeout) as state:
             from gacli.pipeline import needs_of
             derivation = _derive(file, state, needs=needs_of(format in CODE_FORMATS, reactions, steps))

@@ -109,8 +109,6 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
         raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
     if steps and format not in ("text", "latex"):
         raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
-    if output is not None and format in _SEVERAL_FILES:
-        _several_files(format, str(output))
 
 
 # Formats that write several files, and the endings of their names (gacli.output: a file name given
@@ -118,12 +116,14 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
 _SEVERAL_FILES = {"c": (".c", ".h"), "octave": (".m",)}
 
 
-def _several_files(format: str, output: str) -> None:
-    """A file name that can be none of the format's files, refused before the derivation, not after."""
-    from gacli.output import is_directory_target
+def output_usage(format: str, output: str) -> None:
+    """Refuse, before any work: an output that exists and is no regular file or directory (gacli.output,
+    exit 1), then a file name that can be none of a several-file format's files (a usage error)."""
+    from gacli.output import is_directory_target, refuse_special
 
-    endings = _SEVERAL_FILES[format]
-    if is_directory_target(output) or output.endswith(endings):
+    refuse_special(output)
+    endings = _SEVERAL_FILES.get(format)
+    if endings is None or is_directory_target(output) or output.endswith(endings):
         return
     raise typer.BadParameter(f"--format {format} writes several files (names ending in {' and '.join(endings)}): "
                              "give a directory (a trailing / makes one) or the name of one of them",

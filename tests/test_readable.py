@@ -209,7 +209,7 @@ def test_sign_order_keeps_the_value(rng):
 
 
 def test_sines_and_cosines_of_a_difference_are_compacted_where_they_stand():
-    from gacli.algebra.readable import angle_sums_compacted
+    from gacli.algebra.angle_sums import angle_sums_compacted
 
     th, tt, b, x, y = sp.symbols("theta theta_T b x y", real=True)
     # a trailer's constraint: the pair stands beside other uses of θ_T, so the whole does not hold θ − θ_T alone

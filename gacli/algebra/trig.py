@@ -369,26 +369,19 @@ def _summed(poly: Poly, multiply_out: bool = False) -> Poly:
 
 @functools.lru_cache(maxsize=8192)  # the same coefficients are rebuilt again by every later reduction of a tidy
 def _coefficient(total: sp.Expr) -> sp.Expr:
-    """A coefficient multiplied out where that is shorter: sums of rates that cancel only so.
-
-    Parameters' sums such as (m₁ + m₂) stay whole where multiplying them out
-    would lengthen the coefficient.
-    """
-    if not total.is_Add or not any(map(_distributes, total.args)):
-        return total  # nothing to multiply out: its terms stay as many (a loop's, over its dead point)
-    if expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
+    """A coefficient multiplied out where that is shorter (sums of rates that cancel only so; a sum
+    of parameters, m₁ + m₂, stays whole where it would lengthen), and only where a term has a sum
+    to open: a loop's monomials over its dead point stay as many terms."""
+    if not total.is_Add or not any(map(_distributes, total.args)) or \
+            expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS:
         return total
     expanded = sp.expand(total, power_base=False, power_exp=False, log=False)  # products and powers of sums alone
     return expanded if len(sp.Add.make_args(expanded)) < len(total.args) else total
 
 
 def _distributes(term: sp.Expr) -> bool:
-    """Whether a term has a sum among its factors, or a positive power of one: what multiplying out opens."""
-    for factor in sp.Mul.make_args(term):
-        base = factor.base if factor.is_Pow and factor.exp.is_positive else factor
-        if base.is_Add:
-            return True
-    return False
+    """Whether a term has a sum, or a positive power of one, among its factors."""
+    return any((f.base if f.is_Pow and f.exp.is_positive else f).is_Add for f in sp.Mul.make_args(term))
 
 
 def _size(poly: Poly) -> tuple[int, int]:

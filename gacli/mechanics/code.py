@@ -32,7 +32,8 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra.angles import reduced
 from gacli.algebra.graph import cse_operations, is_small, postorder, trees_within
-from gacli.algebra.readable import angle_sums_compacted, readable
+from gacli.algebra.angle_sums import angle_sums_compacted
+from gacli.algebra.readable import readable
 from gacli.algebra.spheres import remainder_on
 from gacli.algebra.terms import factor_terms
 from gacli.mechanics.program import Program, build_program
@@ -99,7 +100,7 @@ def _from_program(program: Program, names: tuple[str, ...]) -> CodeEquations:
 
 def _compacted(e: sp.Expr) -> sp.Expr:
     """A small entry with its pairs sin x cos y ± cos x sin y written as one sine or cosine of the sum
-    where that is shorter (gacli.algebra.readable.angle_sums_compacted): a double pendulum's
+    where that is shorter (gacli.algebra.angle_sums.angle_sums_compacted): a double pendulum's
     l₂ m₂ (sin a₁ sin a₂ − cos a₁ cos a₂)/2 is −l₂ m₂ cos(a₁ + a₂)/2, whose cosine F holds already
     (a cart with an inverted double pendulum: 110 → 94 operations, Kane 109)."""
     if not is_small(e, REDUCED_TREE) or not e.has(sp.sin, sp.cos):
