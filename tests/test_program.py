@@ -12,6 +12,7 @@ from __future__ import annotations
 import functools
 import sys
 from pathlib import Path
+from string import Template
 
 import numpy as np
 import pytest
@@ -398,7 +399,7 @@ loads:
     _assert_taken_and_agrees(system)
 
 
-_TURNTABLE_DISC = """
+_TURNTABLE_DISC = Template("""
 gacli: 1
 name: disc_on_a_turntable
 parameters: [m, r, A, C, Om, g]
@@ -410,12 +411,12 @@ frames:
   leaned: {parent: heading, rotations: [[x, lean]]}
   disc: {parent: leaned, rotations: [[y, spin]]}
 bodies:
-  disc: {mass: m, frame: disc, inertia: [A, C, A]}
+  disc: {mass: m,$position frame: disc, inertia: [A, C, A]}
 rolling:
-  - {body: disc, radius: r, axle: [0, 1, 0], on: table, contact: {N: [x, y, 0]}}
+  - {body: disc, radius: r, axle: [0, 1, 0]$tube, on: table$contact}
 loads:
   - {force: {N: [0, 0, -m*g]}, at: disc}
-"""
+$points""")
 
 
 @pytest.mark.parametrize("tube", ["", ", tube: r/4"], ids=["disc", "torus"])
@@ -425,12 +426,11 @@ def test_a_wheel_placed_by_its_contact_on_a_turning_plane_costs_what_its_points_
     # same disc written with points costs 65 (Kane 142).
     from gacli.mechanics.code import from_program
 
-    placed = loads(_TURNTABLE_DISC.replace("axle: [0, 1, 0],", f"axle: [0, 1, 0]{tube},"))
-    with_points = loads(_TURNTABLE_DISC.replace("contact: {N: [x, y, 0]}", "").replace("on: table, ", "on: table})")
-                        .replace("on: table})}", f"on: table{tube}}}")
-                        .replace("disc: {mass: m, frame: disc,", "disc: {mass: m, position: centre, frame: disc,")
-                        + "points:\n  contact: {N: [x, y, 0]}\n"
-                        + f"  centre: {{from: contact, leaned: [0, 0, r]{', N: [0, 0, r/4]' if tube else ''}}}\n")
+    placed = loads(_TURNTABLE_DISC.substitute(position="", tube=tube, contact=", contact: {N: [x, y, 0]}", points=""))
+    above = ", N: [0, 0, r/4]" if tube else ""
+    with_points = loads(_TURNTABLE_DISC.substitute(
+        position=" position: centre,", tube=tube, contact="",
+        points=f"points:\n  contact: {{N: [x, y, 0]}}\n  centre: {{from: contact, leaned: [0, 0, r]{above}}}\n"))
     costs = []
     for system in (placed, with_points):
         _assert_taken_and_agrees(system)

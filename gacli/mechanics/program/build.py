@@ -175,7 +175,7 @@ def _program(system: System, independent: tuple[str, ...], turning: int | None, 
     if len(kept.directions) + len(forms.forms) != len(dependent):
         raise Unsupported(f"the rows determine {len(kept.directions) + len(forms.forms)} rates, not the "
                           f"{len(dependent)} dependent ones")
-    kept_on = spheres(system)
+    kept_on = motion.tape.spheres
     solver, passes = _rates(kept_on, motion, rows, R.time_column(motion, kept) + forms.dt(motion.tape), independent,
                             dependent, columns)
     if columns and not solver.turns:

@@ -28,6 +28,7 @@ ZERO = sp.S.Zero
 from gacli.algebra.coerce import as_expr
 from gacli.numeric import Program as Evaluator
 from gacli.numeric.samples import SAMPLE_INTERVAL
+from gacli.numeric.spheres import scaled_onto
 
 # Assigned symbols are named so that no declared name can be one: the grammar's names are
 # identifiers, and brackets keep these apart as they keep the differentials d[x] apart.
@@ -47,6 +48,7 @@ class Tape:
     def __init__(self, spheres: tuple = ()) -> None:
         # The generic points lie on the spheres the system keeps its coordinates on
         # (gacli.numeric.spheres): a contact point's height that is zero only where e·e = 1 is zero.
+        self.spheres = tuple(spheres)
         self._spheres = {x: sphere for sphere in spheres for x in sphere.symbols}
         self.assignments: list[tuple[sp.Symbol, sp.Expr, str]] = []
         self.stage = ""
@@ -221,11 +223,8 @@ class Tape:
         return point
 
     def _on_sphere(self, point: dict, draw: random.Random, sphere) -> None:
-        radius2 = sphere.radius2
-        if radius2.free_symbols:
-            self._with(point, draw, sorted(radius2.free_symbols, key=lambda x: x.name))
-        size2 = complex(radius2.xreplace({x: sp.Float(point[x].real, 30) for x in radius2.free_symbols}))
-        values = [draw.uniform(*SAMPLE_INTERVAL) for _ in sphere.symbols]
-        scale = (size2.real / sum(v * v for v in values)) ** 0.5 if size2.real > 0 else 1.0
-        for x, v in zip(sphere.symbols, values):
-            point.setdefault(x, complex(v * scale))
+        radius = sorted(sphere.radius2.free_symbols, key=lambda x: x.name)
+        self._with(point, draw, radius)
+        drawn = {x: draw.uniform(*SAMPLE_INTERVAL) for x in sphere.symbols}
+        scaled = scaled_onto({**drawn, **{x: point[x].real for x in radius}}, (sphere,))
+        point.update({x: complex(scaled[x]) for x in drawn})
