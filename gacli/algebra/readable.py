@@ -27,6 +27,7 @@ from sympy.printing.str import StrPrinter
 from gacli.algebra import trig
 from gacli.algebra.angle_sums import angle_sums_compacted
 from gacli.algebra.angles import relative
+from gacli.algebra.signs import with_signs
 from gacli.algebra.symbols import RATE_NAME
 from gacli.algebra.terms import factor_terms
 from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small, postorder
@@ -73,7 +74,8 @@ class Tidy:
         # (Q − F of an equation: the loads meet only multiplied out, and a shorter
         # form that still shows them would say the equation holds them twice).
         fewest = [c for c in candidates if not any(o.free_symbols < c.free_symbols for o in candidates)]
-        return min(fewest, key=lambda c: len(str(c)))  # the first of equals: the plain reading
+        # The first of equals: the plain reading; then a spring's u/|u| read as sign(u).
+        return with_signs(min(fewest, key=lambda c: len(str(c))))
 
     def _readable(self, expr: sp.Expr) -> sp.Expr:
         ops = sp.count_ops(expr)
