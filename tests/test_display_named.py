@@ -26,6 +26,8 @@ from gacli.numeric.spheres import spheres
 from gacli.pipeline import run
 from gacli.read.expr.build import Scope, build
 from gacli.read.expr.parser import parse
+from gacli.cli import app
+from typer.testing import CliRunner
 
 ROOT = Path(__file__).resolve().parent.parent
 # A program-route bicycle (frames, rolling), a closed-form body in quasi-coordinates, a format-1 car.
@@ -115,6 +117,8 @@ def test_small_systems_print_written_out():
     (("v", "frame+rear_wheel", "actual", "head_tube", 1), "v_frame_rear_wheel_y",
      "velocity of the mass centre of frame and rear_wheel [head_tube]"),
     (("v", "bob@", "u_q", "B", 0), "v_bob_q_x", "the mass centre of bob"),
+    (("I", "G1", "A", 2, 2), "I_G1_zz", "inertia of G1 about it [A]"),
+    (("I", "G1", "A", (1, 2), (1, 2)), "I_G1_yyzz", "equal about y and z [A]"),
 ])
 def test_labels_name_physical_quantities(label, name, words):
     got, _, about = label_name(label)
@@ -133,3 +137,10 @@ def test_no_named_quantity_is_only_another_quantity_s_name():
     lines = [line for s in derivation_report(d)[1:] for line in s.lines]
     assert any(re.match(r"^z\d+ = ", line) for line in lines)
     assert not [line for line in lines if re.match(r"^z\d+ = z\d+$", line)]
+
+
+def test_a_bars_equal_moments_are_named_for_both_axes():
+    """A bar's inertia [0, I, I] is one value on the tape: named for y alone, a planar chain's printout
+    said I_G1_yy where the moment is about z."""
+    text = CliRunner().invoke(app, ["derive", str(ROOT / "benchmarks/kane_set/variants/chains/chain4_relative.yaml")]).output
+    assert "I_G1_yyzz = l1**2*m1/12" in text and "I_G1_yy " not in text

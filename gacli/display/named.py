@@ -79,7 +79,6 @@ def point_words(point: str) -> str:
 
 _FIXED = {"actual": ("", "", ""), "gamma": ("_gamma", "", " for gamma"), "rest": ("_rest", "", ", speeds' rates zero")}
 
-
 def _pass(key: str) -> tuple[str, str, str]:
     """(name suffix, words before, words after) of a pass of rates (gacli.mechanics.program.vectors.Pass)."""
     if key in _FIXED:
@@ -103,8 +102,7 @@ WORDS = (("partial", "partial: for one speed, eq. (14.8)"),
          ("per unit dot(", "per unit dot(q): for the rolling rows"))
 
 
-def _rest(kind: str, key: str) -> str:
-    """", accelerations zero" after α and a with every q̈ zero; nothing after a rest, which says so itself."""
+def _rest(kind: str, key: str) -> str:  # nothing after a rest, which says so itself
     return "" if key == "rest" else _REST.get(kind, "")
 
 
@@ -136,7 +134,10 @@ def label_name(label: tuple) -> tuple[str, str, str]:
     if kind == "I":
         _, point, frame, i, j = label
         base = identifier(f"I_{point}")
-        return f"{base}_{AXES[i]}{AXES[j]}", base, f"inertia of {point_words(point)} about it [{frame}]"
+        equal = isinstance(i, tuple)  # one moment about several axes (units._axes)
+        axes = "".join(AXES[a] * 2 for a in i) if equal else AXES[i] + AXES[j]
+        said = ", equal about " + " and ".join(AXES[a] for a in i) if equal else ""
+        return f"{base}_{axes}", base, f"inertia of {point_words(point)} about it{said} [{frame}]"
     if kind == "M":
         return f"M_{label[1] + 1}_{label[2] + 1}", "M", "mass matrix"
     if kind == "F":

@@ -37,7 +37,7 @@ def tex_name(name: str) -> str:
     return r"\mathrm{%s}" % name.replace("_", r"\_")
 
 
-_VECTOR = re.compile(r"^(w|al|v|a|r|I)_(.+)_([xyz]{1,2})$")
+_VECTOR = re.compile(r"^(w|al|v|a|r|I)_(.+)_([xyz]{1,2}|(?:xx|yy|zz){2,3})$")
 _LETTER = {"w": r"\omega", "al": r"\alpha", "v": "v", "a": "a", "r": "r", "I": "I"}
 
 

@@ -262,7 +262,17 @@ def unit_inertia(tree: FrameTree, u: Unit) -> list[list[sp.Expr]]:
             for i in range(3):
                 for j in range(3):
                     total[i][j] += b.mass * ((sum(x ** 2 for x in rho) if i == j else 0) - rho[i] * rho[j])
-    return [[tape.let(x, name=("I", u.point, u.frame, i, j)) for j, x in enumerate(row)] for i, row in enumerate(total)]
+    return [[tape.let(x, name=("I", u.point, u.frame, *_axes(total, i, j))) for j, x in enumerate(row)]
+            for i, row in enumerate(total)]
+
+
+def _axes(total: list[list], i: int, j: int) -> tuple:
+    """(i, j) of an entry's label; of a moment equal about several axes (a bar's [0, I, I]), those
+    axes as (i, i) for each: the tape names one value once, and it is the moment about each of them."""
+    if i != j:
+        return i, j
+    same = tuple(a for a in range(3) if total[a][a] == total[i][i])
+    return (same, same) if len(same) > 1 else (i, j)
 
 
 def _turned(tree: FrameTree, body: BodyPlacement, pl: Placement) -> list[list[sp.Expr]]:
