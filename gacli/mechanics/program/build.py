@@ -56,10 +56,19 @@ def _setup(system: System, independent: tuple[str, ...] | None,
     origins = dict(model.origins) if model is not None else {}
     contacts = [contact(tree, links, bodies[r.body], r, set(coordinates.values()), origins, above)
                 for r in rolling]
-    root = R.free_root(links, contacts, coordinates, independent) if independent is not None else None
+    level = frozenset({INERTIAL, *(c.plane for c in contacts if _level(tree, c.plane, origins))})
+    root = R.free_root(links, contacts, coordinates, independent, level) if independent is not None else None
     if root is not None and set(R.root_coordinates(links, root[0], coordinates)) & forms.names:
         root = None
     return Motion(tree, links, coordinates, contacts, root), contacts, root
+
+
+def _level(tree: FrameTree, plane: str, origins: dict) -> bool:
+    """Whether a frame's plane z = 0 is N's, its normal ±N.z: turned from N by constant angles alone
+    (a z-down ground, [[x, pi]]), with no origin of its own."""
+    chain = tree.chain(plane)[:-1]
+    return (all(tree.constant(f) for f in chain) and not any(f in origins for f in chain)
+            and tree.nz(plane)[:2] == (0, 0) and tree.nz(plane)[2] in (1, -1))
 
 
 def _columns(motion: Motion, contacts: list, forms: FormRows, reduced: list[str]) -> tuple[R.Rows, dict]:

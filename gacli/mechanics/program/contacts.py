@@ -122,8 +122,10 @@ def _below(tree: FrameTree, n: tuple, axis: int | None, radius: sp.Expr):
         return tree.tape.vec(scale(-radius, n)), None, None
     perp = tuple(ZERO if i == axis else n[i] for i in range(3))
     live = [i for i in range(3) if perp[i] != 0]
-    if len(live) == 1:  # the wheel's plane holds N.z: o = −r e (the wheel above the plane)
-        return tuple(-radius if i == live[0] else ZERO for i in range(3)), None, None
+    if len(live) == 1:  # the wheel's plane holds the normal: o = −r e, e = ±S's axis along the normal
+        # (its sign the entry's: a z-down ground, N turned by π, has n = −N.z, the wheel above it at −z)
+        r = radius if tree.tape.closed(perp[live[0]]).could_extract_minus_sign() else -radius
+        return tuple(r if i == live[0] else ZERO for i in range(3)), None, None
     inverse = tree.tape.let(1 / sp.sqrt(sp.Add(*(x ** 2 for x in perp))))
     return tree.tape.vec([-radius * x * inverse for x in perp]), perp, inverse
 

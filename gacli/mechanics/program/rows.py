@@ -44,9 +44,10 @@ def numbers(tape, columns: dict[str, list[sp.Expr]], names: list[str]) -> np.nda
 
 
 def free_root(links: dict[str, PointLink], contacts: list[C.Contact], coordinates: dict[str, sp.Symbol],
-              independent: tuple[str, ...]) -> tuple[str, C.Contact] | None:
+              independent: tuple[str, ...], level: frozenset = frozenset({INERTIAL})) -> tuple[str, C.Contact] | None:
     """A point at N's origin whose N components are dependent coordinates (or constants), with the
-    contact nearest below it: (point, contact), or None."""
+    contact nearest below it on a plane of ``level`` (N's, or a frame's fixed plane that is N's z = 0,
+    as a z-down ground turned by π about x): (point, contact), or None."""
     symbols = {s: q for q, s in coordinates.items()}
     for root in (link for link in links.values() if link.parent is None and link.frame == INERTIAL):
         own = [symbols[x] for x in root.components if x in symbols]
@@ -54,7 +55,7 @@ def free_root(links: dict[str, PointLink], contacts: list[C.Contact], coordinate
         if not own or any(x.free_symbols & symbols.keys() for x in rest) or set(own) & set(independent):
             continue
         best = None
-        for c in (c for c in contacts if c.plane == INERTIAL):  # a frame's plane moves under the root
+        for c in (c for c in contacts if c.plane in level):  # another frame's plane moves under the root
             depth, point = 0, c.body.point
             while point is not None and point != root.name:
                 point, depth = links[point].parent, depth + 1
