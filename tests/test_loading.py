@@ -199,6 +199,43 @@ def test_a_circle_of_points_is_one_clear_error(points):
     assert "in a circle" in diagnostic.message and "is not a point" not in str(info.value)
 
 
+_FRAMES = """gacli: 1
+name: double_pendulum
+parameters: [m, l]
+coordinates: [a, b]
+frames:
+%s
+points:
+  P: {upper: [l, 0, 0]}
+  Q: {from: P, lower: [l, 0, 0]}
+bodies:
+  p1: {mass: m, position: P}
+  p2: {mass: m, position: Q}
+"""
+
+
+def test_a_frame_may_be_declared_before_its_parent():
+    # As points may: a reviewer's bicycle declared its leaves first and got 16 errors.
+    system = loads(_FRAMES % "  lower: {parent: upper, rotations: [[z, b]]}\n  upper: {rotations: [[z, a]]}")
+    M = derive(system).mass_matrix
+    m, l, b = sp.symbols("m l b", real=True)
+    by_hand = m * l**2 * sp.Matrix([[3 + 2 * sp.cos(b), 1 + sp.cos(b)], [1 + sp.cos(b), 1]])
+    names = {s.name: s for s in M.free_symbols}
+    assert sp.simplify(M - by_hand.subs({m: names["m"], l: names["l"], b: names["b"]})) == sp.zeros(2, 2)
+
+
+@pytest.mark.parametrize("frames, count", [
+    ("  lower: {parent: upper, rotations: [[z, b]]}\n  upper: {parent: lower, rotations: [[z, a]]}", 2),
+    ("  lower: {parent: upper, rotations: [[z, b]]}\n  upper: {rotations: [[z, a +]]}", 1),
+])
+def test_a_frame_in_error_is_reported_once_not_at_each_use(frames, count):
+    with pytest.raises(SystemFileError) as info:
+        loads(_FRAMES % frames, "f.yaml")
+    assert len(info.value.diagnostics) == count, str(info.value)
+    assert "is not a frame" not in str(info.value)
+    assert count == 1 or all("in a circle" in d.message for d in info.value.diagnostics)
+
+
 @pytest.mark.parametrize("error", [RecursionError, OverflowError])
 def test_a_file_sympy_cannot_evaluate_is_one_located_error(error, monkeypatch):
     # A frame turned by 1e300*delta made SymPy recurse without end in a rolling row (a traceback

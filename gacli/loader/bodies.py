@@ -39,7 +39,7 @@ class Geometry:
             terms = {}
             for frame, items in vector.terms:
                 if frame.text not in self.frames:
-                    self.error(frame, where, f"'{frame.text}' is not a frame", did_you_mean(frame.text, self.frames))
+                    self.not_a_frame(frame, where)
                     return None
                 values = self._vector(items, f"{where}.{frame.text}", scope)
                 if values is None:
@@ -72,6 +72,12 @@ class Geometry:
         self.error(node, where, f"'{node.text}' is not a point", did_you_mean(node.text, set(self.points) | bodies))
         return None
 
+    def not_a_frame(self, node: Scalar, where: str) -> None:
+        """'X' is not a frame, unless X is declared and reported where it stands (an error in its
+        rotations, a circle): one message, not one more for each point or body given in it."""
+        if all(d.name != node.text for d in self.decl.frames):
+            self.error(node, where, f"'{node.text}' is not a frame", did_you_mean(node.text, self.frames))
+
     def _frames(self) -> dict[str, F.Frame]:
         width = len(self.scopes.rate_names) + 1
         frames = {F.INERTIAL: F.inertial_frame(width)}
@@ -88,8 +94,16 @@ class Geometry:
             return None
         parent = decl.parent.text if decl.parent is not None else F.INERTIAL
         if parent not in frames:
-            self.error(decl.parent, f"{where}.parent", f"'{parent}' is not a frame declared before '{decl.name}'",
-                       did_you_mean(parent, frames))
+            declared = {d.name: d.parent.text if d.parent is not None else F.INERTIAL for d in self.decl.frames}
+            if parent in declared:  # read_frames put every other parent first: a circle, or a parent in error
+                chain = [decl.name]
+                while chain[-1] in declared and declared[chain[-1]] not in chain:
+                    chain.append(declared[chain[-1]])
+                if chain[-1] in declared:  # its own error, if any, is reported where it stands
+                    self.error(decl.parent, f"{where}.parent", "the frames " + " → ".join([*chain, declared[chain[-1]]])
+                               + " are each turned from the next, in a circle", "give one of them N as its parent")
+            else:
+                self.error(decl.parent, f"{where}.parent", f"'{parent}' is not a frame", did_you_mean(parent, frames))
             return None
         if decl.quaternion:
             return self._quaternion_frame(decl, frames[parent])
@@ -149,8 +163,7 @@ class Geometry:
         """The body-axis rotation forms of the body's frame (its ω dt, derived)."""
         frame = self.frames.get(decl.frame.text)
         if frame is None:
-            self.error(decl.frame, f"{where}.frame", f"'{decl.frame.text}' is not a frame",
-                       did_you_mean(decl.frame.text, self.frames))
+            self.not_a_frame(decl.frame, f"{where}.frame")
             return None
         return tuple(self._row_form(frame.omega[i, :]) for i in range(3))
 

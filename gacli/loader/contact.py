@@ -33,7 +33,6 @@ from gacli.algebra.graph import is_small
 from gacli.model import Body, Constraint, Form
 from gacli.loader.rolling_geometry import (Shape, axle_problem, ellipsoid_contact, ellipsoid_lift, radius_problem, size_problem,
                                           tube_problem)
-from gacli.read.reader import did_you_mean
 from gacli.read.schema import BodyDecl, RollingDecl
 from gacli.numeric.zero import vanishes
 
@@ -269,7 +268,7 @@ class RollingContacts:
     def _surface(self, decl: RollingDecl, where: str) -> F.Frame | None:
         name = decl.on.text if decl.on is not None else F.INERTIAL
         if name not in self.frames:
-            self.error(decl.on, f"{where}.on", f"'{name}' is not a frame", did_you_mean(name, self.frames))
+            self.not_a_frame(decl.on, f"{where}.on")
             return None
         return self.frames[name]
 

@@ -20,7 +20,6 @@ from gacli.algebra.coerce import as_expr
 from gacli.numeric.zero import decide_zero, vanishes
 from gacli.model import Constraint, Form, QuasiCoordinate
 from gacli.read.schema import CoincidenceDecl, GuideDecl, SymbolDecl, VelocityConstraintDecl
-from gacli.read.reader import did_you_mean
 from gacli.read.source import Scalar
 
 
@@ -95,7 +94,7 @@ class Forms:
         point = self._point_named(decl.point, place)
         frame = self.frames.get(decl.frame.text)
         if frame is None:
-            self.error(decl.frame, place, f"'{decl.frame.text}' is not a frame", did_you_mean(decl.frame.text, self.frames))
+            self.not_a_frame(decl.frame, place)
         if point is None or frame is None:
             return ()
         origin = frame.origin or (sp.S.Zero,) * 3

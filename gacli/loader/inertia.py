@@ -60,7 +60,7 @@ class MovedInertia:
     def _turn(self, decl: BodyDecl, where: str, inertia: sp.Matrix, body) -> sp.Matrix | None:
         frame = self.frames.get(decl.inertia_in.text)
         if frame is None:
-            self.error(decl.inertia_in, f"{where}.inertia_in", f"'{decl.inertia_in.text}' is not a frame")
+            self.not_a_frame(decl.inertia_in, f"{where}.inertia_in")
             return None
         R = self._fixed_turn(body, frame)
         if R is None:

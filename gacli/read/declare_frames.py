@@ -15,7 +15,23 @@ def read_frames(reader: Reader, top: dict) -> tuple[FrameDecl, ...]:
     if node is None:
         return ()
     frames = [_frame(reader, key, value) for key, value in node.items if reader.name(key, "frames")]
-    return tuple(f for f in frames if f)
+    return parents_first(tuple(f for f in frames if f))
+
+
+def parents_first(frames: tuple[FrameDecl, ...]) -> tuple[FrameDecl, ...]:
+    """The frames each after its parent, otherwise in the file's order: a file may declare them in
+    any order, as it may its points. Those in a circle, or under a name no frame has, stay last,
+    in order, for the loader to report."""
+    names = {f.name for f in frames}
+    placed, ordered, pending = set(), [], list(frames)
+    while True:
+        ready = [f for f in pending if f.parent is None or f.parent.text in placed or f.parent.text not in names]
+        if not ready:
+            return tuple(ordered + pending)
+        for f in ready:
+            ordered.append(f)
+            placed.add(f.name)
+        pending = [f for f in pending if f.name not in placed]
 
 
 def _frame(reader: Reader, key: Scalar, node: Node) -> FrameDecl | None:
