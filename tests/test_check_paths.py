@@ -140,6 +140,22 @@ def test_a_broken_gacli_file_is_not_skipped(repository):
     assert {f["path"] for f in json.loads(result.stdout)["files"] if f["failed"]} == {"broken.yaml"}
 
 
+@pytest.mark.parametrize("text", [
+    "\ufeffgacli: 1\nname: [\n",                                   # a byte-order mark, as Windows editors write
+    '{"gacli": 1, "name": "h", "coordinates": "x"}\n',               # JSON, or YAML's flow style
+    "? gacli\n: 1\nname: h\ncoordinates: x\n",                     # an explicit key
+    "&top gacli: 1\nname: h\ncoordinates: x\n",                      # an anchor
+    '"g\\x61cli": 1\nname: h\ncoordinates: x\n',                 # an escape
+    "  gacli: 1\n  name: h\n  coordinates: x\n",                      # the whole mapping indented
+], ids=["bom", "flow", "explicit-key", "anchor", "escape", "indented"])
+def test_a_broken_gacli_file_written_any_way_the_loader_reads_is_not_skipped(repository, text):
+    # The gate skipped these as "not a gacli file" and passed, where derive read them and failed.
+    (repository / "broken.yaml").write_bytes(text.encode("utf-8"))
+    result = check("--format", "json", ".")
+    assert result.exit_code == 1, result.output
+    assert {f["path"] for f in json.loads(result.stdout)["files"] if f["failed"]} == {"broken.yaml"}
+
+
 # -- the reports --------------------------------------------------------------------------------
 
 def _bad_name(tmp_path: Path) -> Path:

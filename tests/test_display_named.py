@@ -144,3 +144,13 @@ def test_a_bars_equal_moments_are_named_for_both_axes():
     said I_G1_yy where the moment is about z."""
     text = CliRunner().invoke(app, ["derive", str(ROOT / "benchmarks/kane_set/variants/chains/chain4_relative.yaml")]).output
     assert "I_G1_yyzz = l1**2*m1/12" in text and "I_G1_yy " not in text
+
+
+@pytest.mark.parametrize("path", [ROOT / "tests/cases/fourbar_heights.yaml",
+                                  ROOT / "tests/cases/hoop_with_a_point_mass.yaml"], ids=lambda p: p.stem)
+def test_no_quantity_is_named_for_a_number_times_a_symbol(path):
+    # A reviewer's hoop printed z5 = 3*m, z21 = -z8, z16 = 2*g: a name reads no better than those.
+    d = run(path).derivation
+    lines = [line.strip() for s in derivation_report(d)[1:] for line in s.lines]
+    assert any(re.match(r"^z\d+ = ", line) for line in lines)
+    assert not [line for line in lines if re.match(r"^z\d+ = -?\d*\*?-?[A-Za-z_]\w*$", line)]

@@ -30,14 +30,34 @@ def _rebuilt(e: sp.Expr) -> sp.Expr:
     if not e.args or not e.has(sp.Abs):
         return e
     e = e.func(*(_rebuilt(a) for a in e.args))
-    if e.is_Add and _over_abs(e):
-        e = _over_common(e)
+    if e.is_Add and any(_denominator(t) is not None for t in e.args):
+        return min((_over_common(e), _grouped(e)), key=lambda c: len(str(c)))
     return _signed_product(e) if e.is_Mul else e
 
 
-def _over_abs(e: sp.Expr) -> bool:
-    return any(_abs_of(b) is not None and x.is_negative
-               for term in e.args for b, x in (f.as_base_exp() for f in sp.Mul.make_args(term)))
+def _denominator(term: sp.Expr) -> sp.Expr | None:
+    """u of a term over |u| (the first such factor), or None."""
+    for factor in sp.Mul.make_args(term):
+        base, exp = factor.as_base_exp()
+        if exp == -1 and (u := _abs_of(base)) is not None:
+            return u
+    return None
+
+
+def _grouped(e: sp.Add) -> sp.Expr:
+    """The terms over each |u| gathered, A/|u|, and written B sign(u) where A = B u: a spring's
+    k L₀ (x + 1)/|x + 1| among the other terms of a generalized force (its k (x + 1) among them)."""
+    groups: dict[sp.Expr, list] = {}
+    rest = []
+    for term in e.args:
+        u = _denominator(term)
+        (groups.setdefault(u, []) if u is not None else rest).append(term)
+    for u, terms in groups.items():
+        A = sp.Add(*terms) * sp.Abs(u)
+        B = sp.cancel(A / u) if is_small(A, _FACTORED) else None
+        signed = B is not None and not sp.fraction(B)[1].has(*u.free_symbols)
+        rest += [B * sp.sign(u)] if signed else terms
+    return sp.Add(*rest)
 
 
 def _over_common(e: sp.Add) -> sp.Expr:

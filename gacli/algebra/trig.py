@@ -93,7 +93,9 @@ def _reduce(expr: sp.Expr, memo: dict, cancel: bool = False) -> sp.Expr:
     poly = _distribute(expr, memo)
     angles = _angles(poly)
     if not angles and not cancel:
-        return expr
+        # Squares inside a root alone (a spring's length, √(l² sin² θ + l² cos² θ + …)), reduced there.
+        inside = _rebuild(poly)
+        return inside if _nodes(inside) < _nodes(expr) else expr
     for angle in angles:
         poly = min((_eliminate(poly, angle, sp.cos), _eliminate(poly, angle, sp.sin)), key=_size)
     return _rebuild(poly)

@@ -26,6 +26,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from gacli.check.report import PathsError, Skipped
+from gacli.errors import SystemFileError
+from gacli.read.source import Mapping, parse_source
 
 SUFFIXES = (".yaml", ".yml")
 
@@ -170,10 +172,28 @@ def _shown(boundary: Path) -> str:
 
 
 def _not_gacli(path: Path) -> str | None:
-    """NOT_GACLI when the file's first bytes hold no top-level ``gacli:`` key."""
+    """NOT_GACLI when the file's first bytes hold no top-level ``gacli:`` key, as the loader reads
+    keys: after a byte-order mark, in a flow mapping ({"gacli": 1, ...}), or written any other way
+    YAML allows (an anchor, an escape, the whole mapping indented), which a small file is parsed for."""
     try:
         with open(path, "rb") as handle:
-            head = handle.read(_SNIFF_BYTES)
+            head = handle.read(_SNIFF_BYTES + 1)
     except OSError:
         return None  # check_file reports it, located
-    return None if _GACLI_KEY.search(head) else NOT_GACLI
+    text = head.removeprefix(b"\xef\xbb\xbf")
+    if _GACLI_KEY.search(text) or _FLOW_KEY.search(text):
+        return None
+    return None if len(head) <= _SNIFF_BYTES and _parsed_has_key(head, str(path)) else NOT_GACLI
+
+
+# The key in a flow mapping, which the gate must not skip: the loader reads it.
+_FLOW_KEY = re.compile(rb"[{,][ \t\r\n]*(?:gacli|\"gacli\"|'gacli')[ \t]*:")
+
+
+def _parsed_has_key(data: bytes, name: str) -> bool:
+    """Whether the file parses (safely, within the reader's limits) to a mapping with the key ``gacli``."""
+    try:
+        root = parse_source(data, name).root
+    except SystemFileError:
+        return False
+    return isinstance(root, Mapping) and any(key.text == "gacli" for key, _ in root.items)

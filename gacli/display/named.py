@@ -146,8 +146,9 @@ def label_name(label: tuple) -> tuple[str, str, str]:
 
 
 def is_inline(value: sp.Expr) -> bool:
-    """Worth no name: a function or an integer power of an atom (``cos(yaw)`` and ``r**2`` read as
-    well as any name for them)."""
+    """Worth no name: f(atom), atom**n or n*atom (``cos(yaw)``, ``r**2``, ``3*m``, ``-z8`` read as well)."""
+    if value.is_Mul and len(value.args) == 2 and value.args[0].is_Number:
+        return value.args[1].is_Atom
     if value.is_Pow:  # r**2, 1/w
         return value.base.is_Atom and value.exp.is_Integer
     return isinstance(value, sp.Function) and len(value.args) == 1 and value.args[0].is_Atom
@@ -205,7 +206,6 @@ def from_program(program, taken: set[str]) -> Named:
                 outputs_of[symbol] = value  # printed as M and F themselves
                 continue
             label = None  # an entry other steps read as well (the tape gave both one value): named
-
         if label is None and symbol not in rate_of and (is_inline(value) or
                                                          (uses.get(symbol, 0) <= 1 and _ops(value) <= INLINE_OPS)):
             shown[symbol] = value
