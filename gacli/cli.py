@@ -101,7 +101,12 @@ def _derive(path: Path, state, needs: str | None = None):
             state(name)
             spinner(name)
 
-        return run(path, needs=needs or CLOSED, progress=step).derivation
+        derivation = run(path, needs=needs or CLOSED, progress=step).derivation
+    if (needs or CLOSED) == CLOSED:  # the commands that solve M u̇ = F in closed form or numerically
+        from gacli.check.mass import require_regular
+
+        require_regular(derivation)
+    return derivation
 
 
 @app.callback()

@@ -122,3 +122,23 @@ def test_accepted_hostile_python_imports(source, tmp_path):
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     assert callable(module.rhs)
+
+
+_UNUSED_Y = ("gacli: 1\nname: h\nparameters: {m: {value: 1}}\ncoordinates: [x, y, z]\n"
+             "constraints:\n  - dz = x*dy\nbodies:\n  p: {mass: m, position: [x, 0, 0]}\n")
+
+
+@pytest.mark.parametrize("args", [["derive", "--reactions"], ["derive", "--format", "c", "--reactions"],
+                                  ["linearize", "--symbolic"], ["verify", "--samples", "2"],
+                                  ["simulate", "--t-end", "0.1"]], ids=" ".join)
+def test_a_row_of_m_zero_at_every_state_is_one_located_error_in_every_solving_command(tmp_path, args):
+    # A coordinate that moves nothing: these commands solve M u' = F and ended in SymPy's
+    # NonInvertibleMatrixError or mpmath's TypeError, as tracebacks; check said why.
+    path = tmp_path / "h.yaml"
+    path.write_text(_UNUSED_Y, encoding="utf-8")
+    out = tmp_path / "out"
+    extra = ["--output", f"{out}/"] if "--format" in args else []
+    result = CliRunner().invoke(app, [*args, str(path), *extra])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:4:18: error: mass_matrix: M is singular at every state: its row for dot(y) is zero" in result.output
+    assert "Traceback" not in result.output and not out.exists()

@@ -7,7 +7,7 @@ import sympy as sp
 
 from gacli.check.report import MassMatrixCheck
 from gacli.mechanics.equations import Derivation
-from gacli.errors import Location
+from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.algebra.graph import free_symbols, postorder
 from gacli.model import System
 from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
@@ -38,6 +38,22 @@ def check_mass_matrix(derivation: Derivation, findings) -> MassMatrixCheck:
         note = f"not checked: no value for {', '.join(missing)}"
         return MassMatrixCheck(symmetric, None, 0, note)
     return _positive_definite(system, M, values, symmetric, findings, where)
+
+
+def require_regular(derivation: Derivation) -> None:
+    """For a command that solves M u̇ = F (simulate, verify, --reactions, linearize --symbolic): a row
+    of M that is zero at every state is one located error, as check reports it, not a solver's
+    traceback (NonInvertibleMatrixError) partway through."""
+    found: list[Diagnostic] = []
+
+    class _Collected:
+        @staticmethod
+        def error(message: str, where: str = "", hint: str = "", location: Location | None = None) -> None:
+            found.append(Diagnostic(location or derivation.system.location, message, where, hint))
+
+    _zero_rows(derivation, _equations(derivation)[0], _Collected)
+    if found:
+        raise SystemFileError(found)
 
 
 def _equations(derivation: Derivation):

@@ -271,7 +271,7 @@ def kkt(v: dict, N: int, m: int, force_svd: bool = False) -> tuple[list, list[in
         try:
             x = mpmath.lu_solve(K, b)
             return [x[i] for i in range(N + m)], []
-        except ZeroDivisionError:
+        except (ZeroDivisionError, TypeError):  # mpmath's LU of a zero column compares None with 0
             pass  # singular: least squares, and say which unknowns are free
     x, free = solve_least_squares(K, b)
     return [x[i] for i in range(N + m)], free
