@@ -391,4 +391,6 @@ register_steady(app, example, _boundary, _budget, _derive)
 
 
 def main() -> None:
-    app()
+    from gacli.cli_options import with_standard_output
+
+    with_standard_output(app)

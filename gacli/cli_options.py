@@ -134,3 +134,30 @@ class StrictOptions:
         if repeated:  # ctx.fail: the UsageError of whichever click typer runs on (exit 2)
             ctx.fail(f"{', '.join(repeated)} given more than once (the option takes one value; give it once)")
         return name, command, rest
+
+
+def with_standard_output(run) -> None:
+    """``run()`` (the typer app), with a failing standard output said in one line, never a traceback.
+
+    A full disk or a device that refuses writes (``> /dev/full``) is ``error: stdout: No space left on
+    device``, exit 1; a reader that stopped reading (``| head``) ends the command quietly with exit 1,
+    as click does for the writes it sees, also when the last buffered write fails at exit."""
+    import errno
+    import os
+    import sys
+
+    code: int | str | None = 0
+    try:
+        try:
+            run()
+        except SystemExit as done:
+            code = done.code
+        sys.stdout.flush()
+    except OSError as exc:
+        if exc.filename is not None or exc.errno is None:
+            raise  # not standard output: another stream's failure, which its command reports
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to flush at exit
+        if exc.errno != errno.EPIPE:
+            print(f"error: stdout: {exc.strerror}", file=sys.stderr)
+        code = 1
+    sys.exit(code)

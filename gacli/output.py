@@ -40,7 +40,14 @@ Text = str | bytes
 def is_directory_target(output: str | Path) -> bool:
     """A trailing separator, or an existing directory (a link to one counts)."""
     text = os.fspath(output)
-    return text.endswith(("/", os.sep)) or Path(text).is_dir()
+    if text.endswith(("/", os.sep)):
+        return True
+    try:
+        return stat.S_ISDIR(os.stat(text).st_mode)
+    except (FileNotFoundError, NotADirectoryError):
+        return False
+    except OSError as exc:  # a name too long, a loop of links, no permission to look
+        raise _failure(Path(text), exc) from None
 
 
 def targets(files: dict[str, Text], output: str | Path) -> dict[Path, Text]:
@@ -48,7 +55,13 @@ def targets(files: dict[str, Text], output: str | Path) -> dict[Path, Text]:
     path = Path(output)
     refuse_special(output)
     if is_directory_target(output):
-        if path.exists() and not path.is_dir():
+        try:
+            mode = path.stat().st_mode
+        except (FileNotFoundError, NotADirectoryError):
+            mode = None
+        except OSError as exc:
+            raise _failure(path, exc) from None
+        if mode is not None and not stat.S_ISDIR(mode):
             raise OutputError(f"{output}: not a directory (a trailing / asks for one)")
         return {path / name: text for name, text in sorted(files.items())}
     if len(files) == 1:

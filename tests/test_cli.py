@@ -145,3 +145,28 @@ def test_verify_reactions_and_check_verify():
     assert reactions.exit_code == 0 and "lambda_0 = " in reactions.output
     checked = run("check", "--verify", str(SYSTEMS / "cylinder_in_cylinder.yaml"))
     assert checked.exit_code == 0, checked.output
+
+
+@pytest.mark.skipif(not __import__("os").path.exists("/dev/full"), reason="needs /dev/full")
+@pytest.mark.parametrize("args", [["derive", str(SYSTEMS / "particle_in_plane.yaml")], ["--version"], ["schema"]],
+                         ids=lambda a: a[0])
+def test_a_full_standard_output_is_one_line_not_a_traceback(args):
+    # `gacli derive f.yaml > /dev/full` ended in a rich traceback (OSError: No space left on device).
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    with open("/dev/full", "w") as full:
+        done = subprocess.run([sys.executable, "-m", "gacli", *args], stdout=full, stderr=subprocess.PIPE,
+                              text=True, timeout=120, cwd=root)
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines()[-1] == "error: stdout: No space left on device", done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_a_reader_that_stops_early_ends_the_command_quietly():
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    done = subprocess.run(f"{sys.executable} -m gacli derive {SYSTEMS / 'whipple_bicycle.yaml'} | head -1",
+                          shell=True, capture_output=True, text=True, timeout=120, cwd=root)
+    assert done.stdout.startswith("Whipple bicycle") and done.stderr == ""
