@@ -239,3 +239,17 @@ def test_new_files_are_removed_when_a_later_one_fails(tmp_path, monkeypatch):
     monkeypatch.setattr(output.os, "replace", replace)
     one_message(derive("octave", f"{tmp_path}/out/"), "Input/output error")
     assert list((tmp_path / "out").iterdir()) == []
+
+
+@pytest.mark.parametrize("args, where", [
+    (["derive", str(SYSTEM), "--output"], "{long}.txt"),
+    (["derive", str(SYSTEM), "--format", "c", "--output"], "{long}/"),
+    (["simulate", str(ROOT / "systems" / "particle_in_plane.yaml"), "--input", "R=0,S=0", "--t-end", "0.1",
+      "--csv"], "{long}.csv"),
+], ids=["text", "c", "csv"])
+def test_a_name_longer_than_the_file_system_takes_is_one_message(tmp_path, args, where):
+    # OSError: [Errno 36] File name too long, from Path.is_dir, as a traceback.
+    target = tmp_path / where.format(long="a" * 300)
+    result = CliRunner().invoke(app, [*args, str(target)])
+    assert result.exit_code == 1, result.output
+    assert "cannot write: File name too long" in result.output and "Traceback" not in result.output
