@@ -39,7 +39,8 @@ def derive_for_code(system: System) -> Derivation | None:
     choose other independent rates than the chapter's route; the caller then derives the
     closed forms as usual (docs/program.md)."""
     program = program_for(system) if _same_choice(system) else None
-    return None if program is None else Derivation(system, program=program)
+    # No independent rate: the chapter's route says so, located, for every command alike (k = 0).
+    return None if program is None or not program.independent else Derivation(system, program=program)
 
 
 def _same_choice(system: System) -> bool:
