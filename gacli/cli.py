@@ -138,7 +138,7 @@ def derive(
     derive_usage(format, output, steps, reactions)
     with _boundary():
         if output is not None:  # a device or FIFO, or a name none of the files can have: before the work
-            output_usage(format, str(output))
+            output_usage(format, str(output), file)
         with _budget(file, timeout) as state:
             from gacli.pipeline import needs_of
             derivation = _derive(file, state, needs=needs_of(format in CODE_FORMATS, reactions, steps))
@@ -297,7 +297,7 @@ def simulate(
                                      show=show, phase=phase, t_end=t_end, method=method,
                                      rtol=rtol, atol=atol, points=points)
         sim.require("scipy.integrate")
-        check_outputs(csv, plot)
+        check_outputs(csv, plot, file)
         with _budget(file, timeout) as state, simulate_console.notes_from_warnings():
             derivation = _derive(file, state)
             state("simulating")

@@ -116,12 +116,15 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
 _SEVERAL_FILES = {"c": (".c", ".h"), "octave": (".m",)}
 
 
-def output_usage(format: str, output: str) -> None:
-    """Refuse, before any work: an output that exists and is no regular file or directory (gacli.output,
-    exit 1), then a file name that can be none of a several-file format's files (a usage error)."""
-    from gacli.output import is_directory_target, refuse_special
+def output_usage(format: str, output: str, source: Path | None = None) -> None:
+    """Refuse, before any work: an output that exists and is no regular file or directory, or is the
+    system file ``source`` (gacli.output, exit 1), then a file name that can be none of a several-file
+    format's files (a usage error)."""
+    from gacli.output import is_directory_target, refuse_input, refuse_special
 
     refuse_special(output)
+    if source is not None:
+        refuse_input(output, source)
     endings = _SEVERAL_FILES.get(format)
     if endings is None or is_directory_target(output) or output.endswith(endings):
         return

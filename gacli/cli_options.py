@@ -61,16 +61,19 @@ def verify_options(samples: int, tol: float) -> None:
         raise OptionError(problems)
 
 
-def check_outputs(csv, plot) -> None:
-    """Refused before any work: a plot that is not .png or .svg, an output that is a device or FIFO."""
+def check_outputs(csv, plot, source=None) -> None:
+    """Refused before any work: a plot that is not .png or .svg, an output that is a device or FIFO,
+    or the system file ``source`` itself."""
     if plot is not None:
         from gacli.simulate.plot import check
 
         check(plot)
     if csv is not None:
-        from gacli.output import refuse_special
+        from gacli.output import refuse_input, refuse_special
 
         refuse_special(csv)
+        if source is not None:
+            refuse_input(csv, source)
 
 
 def write_outputs(result, spec, csv, plot, units=None) -> None:

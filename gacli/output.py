@@ -90,6 +90,19 @@ def write_files(files: dict[str, Text], output: str | Path) -> list[Path]:
     return list(planned)
 
 
+def refuse_input(output: str | Path, source: str | Path) -> None:
+    """Refuse, before any work, an output that is the system file the command reads (``derive f.yaml
+    --output f.yaml``): writing it would replace the file with what was derived from it."""
+    if str(source) == "-" or is_directory_target(output):
+        return
+    try:
+        same = os.path.samefile(output, source)
+    except OSError:  # the output does not exist yet (or cannot be looked at: written, it says why)
+        return
+    if same:
+        raise OutputError(f"{output}: is the system file this command reads; give the output another name")
+
+
 def refuse_special(output: str | Path) -> None:
     """Refuse, before any work, an output that exists and is neither a regular file nor a directory."""
     if not is_directory_target(output):

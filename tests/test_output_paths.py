@@ -253,3 +253,18 @@ def test_a_name_longer_than_the_file_system_takes_is_one_message(tmp_path, args,
     result = CliRunner().invoke(app, [*args, str(target)])
     assert result.exit_code == 1, result.output
     assert "cannot write: File name too long" in result.output and "Traceback" not in result.output
+
+
+@pytest.mark.parametrize("args", [["derive", "{f}", "--output", "{f}"], ["derive", "{f}", "--output", "{link}"],
+                                  ["simulate", "{f}", "--input", "R=0,S=0", "--t-end", "0.1", "--csv", "{f}"]],
+                         ids=["derive", "derive-through-a-link", "simulate-csv"])
+def test_the_system_file_itself_is_never_the_output(tmp_path, args):
+    # derive f.yaml --output f.yaml replaced the system file with its own printout.
+    source = tmp_path / "particle.yaml"
+    source.write_bytes((ROOT / "systems" / "particle_in_plane.yaml").read_bytes())
+    before = source.read_bytes()
+    (tmp_path / "link.yaml").symlink_to(source)
+    result = CliRunner().invoke(app, [a.format(f=source, link=tmp_path / "link.yaml") for a in args])
+    assert result.exit_code == 1, result.output
+    assert "is the system file this command reads" in result.output
+    assert source.read_bytes() == before
