@@ -53,3 +53,15 @@ def test_a_coordinate_in_nothing_keeps_its_message(tmp_path: Path):
     path.write_text(PENDULUM.replace("VALUE", "1").replace("[q1, q2, q3]", "[q1, q2, q3, s]"), encoding="utf-8")
     result = CliRunner().invoke(app, ["check", str(path)])
     assert "no body depends on coordinate 's' (it is in no position or rotation)" in result.stderr
+
+
+def test_a_parameter_value_past_what_a_double_holds_fails_check_where_it_stands(tmp_path: Path):
+    # 10**100 to the fourth passed check (M was 'not checked: no value for b'), and simulate refused it.
+    path = tmp_path / "pv.yaml"
+    path.write_text("gacli: 1\nname: pv\nparameters:\n  a: {value: \"10**100\"}\n  b: {value: \"a*a*a*a\"}\n"
+                    "  m: {value: \"b*b\"}\ncoordinates: [x, y]\nbodies:\n  p: {mass: m, position: [x, y]}\n"
+                    "potential: a*b*y\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:5:3: error: parameters.b: the value of 'b' is not a finite real number" in result.output
+    assert "'m' is not a finite" not in result.output

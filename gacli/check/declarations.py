@@ -8,6 +8,7 @@ from gacli.algebra import symbols as S
 from gacli.errors import Diagnostic, Location
 from gacli.algebra.graph import free_symbols
 from gacli.model import System
+from gacli.numeric import UndefinedValue, evaluate
 
 
 def unused_declarations(system: System) -> list[Diagnostic]:
@@ -35,7 +36,23 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     for c in system.coordinates:
         if c.name not in bodies:
             out.append(_warning(c.location, f"coordinates.{c.name}", _moves_nothing(system, c.name)))
-    return out + _quaternions_without_rates(system) + _norms_by_their_differential(system)
+    return out + _quaternions_without_rates(system) + _norms_by_their_differential(system) + _not_finite(system)
+
+
+def _not_finite(system: System) -> list[Diagnostic]:
+    """Errors: a parameter's value that is no finite number (10**100 to the fourth: simulate refuses it,
+    and every numeric check of M would skip it as if it had no value)."""
+    values, out = {}, []
+    for p in system.parameters:
+        if p.value is None:
+            continue
+        try:
+            values[S.value(p.name)] = float(evaluate(p.value, values)[0])
+        except UndefinedValue:
+            out.append(Diagnostic(p.location, f"the value of '{p.name}' is not a finite real number",
+                                  f"parameters.{p.name}", "give a value a double can hold (below about 1e308)"))
+            break  # later values built on it would say the same
+    return out
 
 
 def _quaternions_without_rates(system: System) -> list[Diagnostic]:
