@@ -65,3 +65,14 @@ def test_a_parameter_value_past_what_a_double_holds_fails_check_where_it_stands(
     assert result.exit_code == 1, result.output
     assert f"{path}:5:3: error: parameters.b: the value of 'b' is not a finite real number" in result.output
     assert "'m' is not a finite" not in result.output
+
+
+@pytest.mark.parametrize("name, why", [("lambda", "is a Python keyword"), ("x__2", "contains '__'")])
+def test_a_symbol_no_expression_could_write_is_refused_where_it_is_declared(tmp_path: Path, name, why):
+    # Accepted when declared, refused only at its first use in an expression (or never, if unused).
+    path = tmp_path / "kw.yaml"
+    path.write_text(f"gacli: 1\nname: kw\nparameters: {{{name}: {{value: 1}}, m: {{value: 1}}}}\ncoordinates: [x]\n"
+                    "bodies: {b: {mass: m, position: [x, 0, 0]}}\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:3:14: error: parameters: '{name}' {why}: no expression could use it" in result.output

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import keyword
+
 from gacli.read.reader import Reader, describe
 from gacli.read.schema import (
     QUASI_KEYS,
@@ -31,12 +33,12 @@ def read_symbols(reader: Reader, top: dict) -> tuple[SymbolDecl, ...]:
 
 def _symbol_section(reader: Reader, node: Node, section: str, kind: str) -> list[SymbolDecl]:
     if isinstance(node, Sequence):
-        names = [(item, reader.name(item, f"{section}[{i}]")) for i, item in enumerate(node.items)]
+        names = [(item, _written_name(reader, item, f"{section}[{i}]")) for i, item in enumerate(node.items)]
         return [SymbolDecl(kind, name, item) for item, name in names if name]
     if isinstance(node, Mapping):
         out = []
         for key, value in node.items:
-            name = reader.name(key, section)
+            name = _written_name(reader, key, section)
             if name:
                 out.append(_symbol_entry(reader, kind, key, value, f"{section}.{name}"))
         return out
@@ -44,6 +46,17 @@ def _symbol_section(reader: Reader, node: Node, section: str, kind: str) -> list
         return []
     reader.error(node, section, f"expected a list of names or a mapping, found {describe(node)}")
     return []
+
+
+def _written_name(reader: Reader, node: Node, where: str) -> str | None:
+    """A symbol's name, refused where it is declared when no expression could write it (the grammar's
+    rule): a Python keyword, or a name with '__'; else its first use was the error."""
+    name = reader.name(node, where)
+    if name is not None and (keyword.iskeyword(name) or "__" in name):
+        why = "is a Python keyword" if keyword.iskeyword(name) else "contains '__'"
+        reader.error(node, where, f"'{name}' {why}: no expression could use it", "choose another name")
+        return None
+    return name
 
 
 def _symbol_entry(reader: Reader, kind: str, key: Scalar, value: Node, where: str) -> SymbolDecl:
