@@ -147,3 +147,20 @@ def test_check_reports_a_nonlinear_constraint_as_such():
 
     (verdict,) = classify(load(SYSTEMS / "appell_hamel.yaml"))
     assert verdict.verdict.startswith("nonlinear")
+
+
+def test_a_relation_written_with_rates_but_linear_in_them_is_a_pfaffian_row(tmp_path):
+    # dot(x) = dot(y) was a 'nonlinear' constraint, 'not linear in the rates' and not tested for
+    # integrability; it is dx - dy = 0, holonomic.
+    from typer.testing import CliRunner
+    from gacli.cli import app
+
+    path = tmp_path / "dd.yaml"
+    path.write_text("gacli: 1\nname: dd\nparameters: {m: {value: 1}, r: {value: 2}}\ncoordinates: [x, y, phi]\n"
+                    "constraints:\n  - dot(x) = dot(y)\n  - dot(x) = r*dot(phi)*cos(y) + 1\n"
+                    "bodies: {b: {mass: m, position: [x, y, phi]}}\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", "--format", "json", str(path)])
+    import json
+
+    verdicts = [c["verdict"] for c in json.loads(result.stdout)["files"][0]["classifications"]]
+    assert verdicts == ["holonomic", "non-holonomic"], result.stdout

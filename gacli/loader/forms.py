@@ -130,6 +130,7 @@ class Forms:
         diffs = {S.differential(n) for n in self.scopes.rate_names} | {S.DT}
         rates = {S.rate(n) for n in self.scopes.rate_names}
         try:
+            expr = _rates_as_differentials(expr, self.scopes.rate_names, diffs)
             nonlinear = bool(expr.free_symbols & rates) or bool(expr.free_symbols & diffs) and not _is_linear_form(expr, diffs)
         except (ArithmeticError, ValueError, TypeError, RecursionError):
             # SymPy evaluates numbers as it goes; an extreme one (cosh(cosh(1e300))) overflows.
@@ -226,6 +227,21 @@ def _split_equation(text: str) -> list[tuple[int, int | None]] | int:
     if second >= 0:
         return second
     return [(0, first), (first + 1, None)]
+
+
+def _rates_as_differentials(expr: sp.Expr, names, diffs: set[sp.Symbol]) -> sp.Expr:
+    """A relation written with rates but linear in them, Σ c ṙ + c₀ = 0 (dot(x) = r*dot(phi)), as the
+    form Σ c dr + c₀ dt = 0 it is: classified, tested for integrability and solved as any Pfaffian row,
+    not as a relation nonlinear in the rates (docs/nonlinear.md). Anything else is returned as it is."""
+    differential = {S.rate(n): S.differential(n) for n in names}
+    present = sorted(expr.free_symbols & differential.keys(), key=lambda r: r.name)
+    if not present or expr.free_symbols & diffs:
+        return expr
+    partials = [sp.diff(expr, r) for r in present]
+    if any(p.free_symbols & set(present) for p in partials):
+        return expr
+    rest = expr.xreplace({r: sp.S.Zero for r in present})
+    return sp.Add(*(c * differential[r] for c, r in zip(partials, present))) + rest * S.DT
 
 
 def _is_linear_form(expr: sp.Expr, diffs: set[sp.Symbol]) -> bool:
