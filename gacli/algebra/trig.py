@@ -45,8 +45,7 @@ Poly = dict[Monomial, list[sp.Expr]]  # monomial → the coefficient as a list o
 
 
 class _TooLarge(Exception):
-    pass
-
+    """An expression past MAX_NODES, MAX_TERMS or MAX_WORK: left as it is."""
 
 def reduce(expr: sp.Expr, cancel: bool = False) -> sp.Expr:
     """``expr`` with sin² + cos² = 1 applied, or ``expr`` itself when that would not be cheap.
@@ -145,7 +144,7 @@ def _holds_trig(expr: sp.Expr) -> bool:
 
 
 class _Square(Exception):
-    pass
+    """A square of a sine or cosine may form: the reduction is worth trying."""
 
 
 _NONE: frozenset = frozenset()

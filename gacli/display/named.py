@@ -108,8 +108,7 @@ def _rest(kind: str, key: str) -> str:  # nothing after a rest, which says so it
 
 def legend(abouts) -> str:
     """The legend of a program's named quantities: what their descriptions say, the words they use."""
-    abouts = [a for a in abouts if a]
-    said = [meaning for word, meaning in WORDS if any(word in a for a in abouts)]
+    said = [meaning for word, meaning in WORDS if any(word in a for a in abouts if a)]
     return "(" + "; ".join([LEGEND, *said]) + ")"
 
 
