@@ -19,7 +19,7 @@ import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.algebra.graph import free_symbols
-from gacli.display.named import identifier, label_name, point_words
+from gacli.display.labels import identifier, label_name, point_words
 from gacli.display.report import derivation_report, long_form
 from gacli.numeric import Program
 from gacli.numeric.spheres import spheres

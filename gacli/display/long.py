@@ -17,6 +17,7 @@ from gacli.algebra.graph import trees_within
 from gacli.algebra.readable import show
 from gacli.algebra.symbols import rate_name
 from gacli.display import named as N
+from gacli.display.labels import legend
 from gacli.display import printed
 
 # The issue's bound: at most this many characters per operation of the generated rhs.
@@ -83,7 +84,7 @@ def parts(d, named: N.Named) -> tuple[tuple[str, tuple[str, ...]], ...]:
 
 def quantity_lines(named: N.Named) -> tuple[str, ...]:
     """``name = value`` in evaluation order, each vector's description once above it as ``# ...``."""
-    lines = [N.legend(q.about for q in named.quantities)] if named.source == "program" else []
+    lines = [legend(q.about for q in named.quantities)] if named.source == "program" else []
     said = None
     for q in named.quantities:
         if q.about and q.about != said:
