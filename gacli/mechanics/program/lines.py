@@ -24,24 +24,30 @@ from gacli.mechanics.program.vectors import ZV, Pass, add, dot, neg, scale
 
 
 def line_loads(motion: Motion, actual: Pass, lines: tuple[Line, ...]) -> tuple[Load, ...]:
-    """Each line's force at both its ends, along N."""
+    """Each line's force at both its ends, along N; the lines between the same two points (a spring
+    and a damper side by side) as one force, T their tensions summed (a tethered body: 188 → 180
+    operations, Kane 180)."""
     tape = motion.tape
     out: list[Load] = []
+    between_same: dict[frozenset, list[Line]] = {}
     for line in lines:
-        a, b = line.ends
+        between_same.setdefault(frozenset(line.ends), []).append(line)
+    for same in between_same.values():
+        a, b = same[0].ends
         frame = motion.tree.common(motion.frame_of(a), motion.frame_of(b))
         d = tape.vec(between(motion, a, b, frame))
         squared = tape.let(dot(d, d))
         per_length = sp.S.Zero  # T / ℓ
-        if line.stiffness is not None:
-            if line.length == 0:
-                per_length += line.stiffness
-            else:
-                length = tape.let(sp.sqrt(squared))
-                per_length += line.stiffness * (length - line.length) / length
-        if line.damping is not None:
-            v = add(motion.velocity(b, actual, frame), neg(motion.velocity(a, actual, frame)))
-            per_length += line.damping * tape.let(dot(d, v)) / squared
+        for line in same:
+            if line.stiffness is not None:
+                if line.length == 0:
+                    per_length += line.stiffness
+                else:
+                    length = tape.let(sp.sqrt(squared))
+                    per_length += line.stiffness * (length - line.length) / length
+            if line.damping is not None:  # d·(v_B − v_A) whichever way the line was written
+                v = add(motion.velocity(b, actual, frame), neg(motion.velocity(a, actual, frame)))
+                per_length += line.damping * tape.let(dot(d, v)) / squared
         f = tape.vec(scale(-tape.let(per_length), d))
         out += [Load(FrameVector(((frame, f),)), False, point=b),
                 Load(FrameVector(((frame, neg(f)),)), False, point=a)]
