@@ -8,6 +8,8 @@ imports ``gacli.cli``. Nothing here imports SymPy at import time.
 
 from __future__ import annotations
 
+import math
+
 from collections.abc import Callable
 from typing import Annotated, Optional
 
@@ -75,7 +77,14 @@ def parse_sweep(text: str) -> tuple[str, float, float, int]:
         raise OptionError([f"--sweep '{text}': expected NAME=START:STOP or NAME=START:STOP:COUNT"]) from None
     if count < 2 or not start < stop:
         raise OptionError([f"--sweep '{text}': needs START < STOP and a COUNT of at least 2"])
+    if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(stop - start)):
+        raise OptionError([f"--sweep '{text}': START and STOP are finite numbers, and so is their distance"])
+    if count > _SWEEP_MAX:  # as simulate's --points: refused before the values are made
+        raise OptionError([f"--sweep '{text}': COUNT {count} is more than {_SWEEP_MAX:,} values"])
     return canonical_name(name), start, stop, count
+
+
+_SWEEP_MAX = 1_000_000
 
 
 def sweep_lines(derivation, text: str, pairs, overrides, names) -> list[str]:

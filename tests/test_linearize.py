@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 import sympy as sp
 from typer.testing import CliRunner
 
@@ -58,3 +59,13 @@ def test_linearize_command():
     assert "-16.35" in result.output and "eigenvalues:" in result.output
     bad = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--states", "lean"])
     assert bad.exit_code == 2 and "not in the state: lean" in bad.output
+
+
+
+@pytest.mark.parametrize("sweep, said", [("theta=0:inf:3", "finite numbers"), ("theta=-1e308:1e308:3", "finite numbers"),
+                                         ("theta=0:1:1000000000", "more than 1,000,000 values")])
+def test_a_sweep_past_what_numbers_hold_is_a_usage_error(sweep, said):
+    # inf ended in numpy's LinAlgError as a traceback; a billion values grew to 7.8 GB before the budget.
+    result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--sweep", sweep])
+    assert result.exit_code == 2, result.output
+    assert said in result.output and "Traceback" not in result.output

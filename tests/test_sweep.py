@@ -213,3 +213,14 @@ def test_without_distributed_the_scheduler_option_says_what_to_install(monkeypat
     result = invoke("sweep", DISK, "--run", "linearize", "--grid", "m=1:2:2", "--scheduler", "tcp://x:1")
     assert result.exit_code == 1
     assert "pip install 'gacli[sweep]'" in result.output and "Traceback" not in result.output
+
+
+@pytest.mark.parametrize("kwargs, said", [
+    ({"random": ["theta=0:1"], "samples": 1_000_000_000}, "--samples 1000000000: more than"),
+    ({"grid": ["theta=0:1:1000000000"]}, "COUNT 1000000000 is more than"),
+    ({"random": ["theta=0:1"], "samples": 2, "seed": -1}, "--seed -1: a seed is a whole number"),
+], ids=["samples", "grid-count", "seed"])
+def test_a_plan_past_its_bounds_is_refused_before_any_point_is_made(kwargs, said):
+    # A billion samples, or one axis of a billion values, filled 14 GB before the check (or none) came.
+    with pytest.raises(SweepError, match=said.replace("(", r"\(")):
+        plan(**kwargs)

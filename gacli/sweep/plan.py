@@ -66,6 +66,10 @@ def plan(grid: Sequence[str] = (), random: Sequence[str] = (), samples: int | No
         raise SweepError("--random needs --samples N, the number of points to draw")
     if grid and samples:
         raise SweepError("--samples goes with --random; a grid has as many points as its values")
+    if samples and samples > MAX_POINTS:  # refused before any draw: a billion points fill the memory first
+        raise SweepError(f"--samples {samples}: more than {MAX_POINTS} points")
+    if seed < 0:
+        raise SweepError(f"--seed {seed}: a seed is a whole number of at least 0")
     axes = [_axis(text, "--grid" if grid else "--random") for text in (grid or random)]
     names = [a.name for a in axes]
     repeated = sorted({n for n in names if names.count(n) > 1})
@@ -110,6 +114,8 @@ def _number(option: str, text: str, part: str) -> float:
 def _count(option: str, text: str, part: str) -> int:
     if not part.isdigit() or int(part) < 1:
         raise SweepError(f"{option} '{text}': COUNT '{part}' is not a whole number of at least 1")
+    if int(part) > MAX_POINTS:  # before its values are made, not after
+        raise SweepError(f"{option} '{text}': COUNT {part} is more than {MAX_POINTS} points")
     return int(part)
 
 
