@@ -11,10 +11,20 @@ back up here.
 from __future__ import annotations
 
 from gacli import notebook  # noqa: F401  (on import, Derivation gets _repr_latex_)
-from gacli.emit import emit
-from gacli.mechanics.equations import Derivation, derive
+from gacli.emit import derived, emit
+from gacli.mechanics import equations
+from gacli.mechanics.equations import Derivation
+from gacli.model import System
 
 __all__ = ["Derivation", "derive", "emit"]
+
+
+def derive(system, *, progress=None) -> Derivation:
+    """The Gibbs-Appell equations of a System (``gacli.load``), or of a system file's path, loaded first
+    (the steps: :func:`gacli.mechanics.equations.derive`)."""
+    if isinstance(system, System):
+        return equations.derive(system, progress=progress)
+    return derived(system)
 
 
 # -- linearize and simulate: the commands of the same names ------------------------------

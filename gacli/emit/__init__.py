@@ -77,13 +77,33 @@ EMITTERS: dict[str, Emitter] = {
 
 
 def emit(derivation: Derivation, format: str, **options) -> dict[str, str]:
-    """Generated files for ``format`` (a key of :data:`EMITTERS`), as {file name: text}."""
+    """Generated files for ``format`` (a key of :data:`EMITTERS`), as {file name: text}.
+
+    ``derivation`` is what ``gacli.derive`` returns; a System (``gacli.load``) or a system file's
+    path is derived first, as a notebook writes ``gacli.emit(gacli.load(path), "c")``."""
     try:
         emitter = EMITTERS[format]
     except KeyError:
         # Worded as the command line words it (gacli.cli_help.choice).
         raise EmitError(f"'{format}' is not a format; choose one of: {', '.join(sorted(EMITTERS))}") from None
-    return emitter(derivation, **options)
+    return emitter(derived(derivation), **options)
+
+
+def derived(what) -> Derivation:
+    """A Derivation from itself, a System or a system file's path; a TypeError that says which, else."""
+    from pathlib import Path
+
+    from gacli.loader.loading import load
+    from gacli.mechanics.equations import Derivation, derive
+    from gacli.model import System
+
+    if isinstance(what, (str, Path)):
+        what = load(what)
+    if isinstance(what, System):
+        return derive(what)
+    if not isinstance(what, Derivation):
+        raise TypeError(f"expected what gacli.derive returns, a System (gacli.load) or a path; got {type(what).__name__}")
+    return what
 
 
 __all__ = ["EMITTERS", "Emitter", "emit", "emit_c", "emit_fmu", "emit_jax", "emit_latex", "emit_octave", "emit_python"]
