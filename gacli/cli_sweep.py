@@ -133,7 +133,8 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     with console.progress(mode, len(plan)) as advance:
         rows = S.run(job, plan, jobs=jobs, scheduler=scheduler, progress=advance, first=first)
     table = S.table(S.columns(task), plan.points, rows)
-    where = f"on {scheduler}" if scheduler else f"on {jobs} processes" if jobs > 1 else "here"
+    used = min(jobs, len(plan) - 1)  # the processes started: the first point ran here, the rest in chunks
+    where = f"on {scheduler}" if scheduler else f"on {used} processes" if used > 1 else "here"
     console.summary(len(plan), sum(1 for r in rows if r[-1]), f"{where} in {time.perf_counter() - started:.3g} s")
     if output is None:
         typer.echo(S.to_csv(table), nl=False)
