@@ -139,3 +139,15 @@ def test_sweep_says_when_the_point_is_no_steady_motion():
     assert result.exit_code == 0 and "not a steady motion" in result.output
     fine = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "rolling_disk.yaml"), "--sweep", "dot(spin)=1:5:3"])
     assert "not a steady motion" not in fine.output
+
+
+def test_a_swept_parameter_without_a_value_needs_no_set(tmp_path):
+    # 'no value for the parameters k (give them with --set)' for the very parameter swept.
+    from gacli.loader.loading import loads
+    from gacli.mechanics.equations import derive
+    from gacli.steady.sweep import sweep
+
+    system = loads("gacli: 1\nname: spring\nparameters: {m: {value: 1}, k: {}}\ncoordinates: [x]\n"
+                   "bodies: {b: {mass: m, position: [x, 0, 0]}}\npotential: k*x**2/2\n")
+    result = sweep(derive(system), "k", -1.0, 1.0, points=5)
+    assert result.stable[-1] and not result.stable[0]  # m x'' = -k x: a spring for k > 0 only

@@ -47,7 +47,10 @@ def sweep(derivation: Derivation, name: str, start: float, stop: float, *, at: M
           parameters: Mapping[str, float] | None = None, states: Sequence[str] | None = None,
           points: int = 101) -> Sweep:
     """Eigenvalues with ``name`` (a state, an input or a parameter) from ``start`` to ``stop``."""
-    matrix = _Matrix(derivation, name, dict(at or {}), dict(parameters or {}), states)
+    given = dict(parameters or {})
+    if name in {p.name for p in derivation.system.parameters}:  # swept: no --set needed for it
+        given.setdefault(name, float(start))
+    matrix = _Matrix(derivation, name, dict(at or {}), given, states)
     values = np.linspace(float(start), float(stop), int(points))
     matrices = [matrix(v) for v in values]
     state = matrix.state
