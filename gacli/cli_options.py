@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import os
 
 import typer
 
@@ -63,7 +64,9 @@ def verify_options(samples: int, tol: float) -> None:
 
 def check_outputs(csv, plot, source=None) -> None:
     """Refused before any work: a plot that is not .png or .svg, an output that is a device or FIFO,
-    or the system file ``source`` itself."""
+    the system file ``source`` itself, or the table and the plot written to one file."""
+    if csv is not None and plot is not None and os.path.abspath(csv) == os.path.abspath(plot):
+        raise typer.BadParameter(f"{plot} is also --csv: the plot would replace the table", param_hint="--plot")
     if plot is not None:
         from gacli.simulate.plot import check
 

@@ -268,3 +268,12 @@ def test_the_system_file_itself_is_never_the_output(tmp_path, args):
     assert result.exit_code == 1, result.output
     assert "is the system file this command reads" in result.output
     assert source.read_bytes() == before
+
+
+def test_the_table_and_the_plot_to_one_file_is_a_usage_error(tmp_path):
+    # simulate --csv o.png --plot o.png wrote the table, then the plot over it, and said 'wrote o.png' twice.
+    target = tmp_path / "o.png"
+    result = CliRunner().invoke(app, ["simulate", str(ROOT / "systems" / "particle_in_plane.yaml"), "--input",
+                                      "R=0,S=0", "--t-end", "0.1", "--csv", str(target), "--plot", str(target)])
+    assert result.exit_code == 2, result.output
+    assert "is also --csv" in result.output and not target.exists()
