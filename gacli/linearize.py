@@ -317,7 +317,8 @@ def symbolic_point(derivation: Derivation, pairs) -> dict[str, sp.Expr]:
             tree = parse(text)
             known = dict(zip(lay.parameters, lay.parameter_symbols))
             free = {n: sp.Symbol(n, real=True) for n in _names(tree) if n not in known and n != "pi"}
-            out[name] = build(tree, Scope(values={**known, **free}))
+            out[name] = build(tree, Scope(values={**known, **free}, declared=frozenset(lay.state),
+                                          rate_note="an --at value is in numbers and parameters, or new names"))
         except (ParseError, BuildError) as exc:
             raise LinearizeError(f"--at {name}={text}: {exc.message}") from None
     return out

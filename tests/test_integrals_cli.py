@@ -59,3 +59,14 @@ def test_simulate_reports_the_momenta_drift():
     A_O, C = 0.0005 + 1 * 0.05**2, 0.0008
     assert run.integrals["momentum of phi"][0] == pytest.approx(A_O * np.sin(0.5)**2 + C * 50 * np.cos(0.5))
     assert run.integral_drift("momentum of phi") < 1e-6
+
+
+def test_an_acceleration_in_a_candidate_is_refused_as_such_not_as_undeclared():
+    # "'q' in 'ddot(q)' is not declared", of a quasi-coordinate the file declares.
+    from typer.testing import CliRunner
+
+    from gacli.cli import app
+
+    result = CliRunner().invoke(app, ["integrals", str(SYSTEMS / "spinning_top.yaml"), "--candidate", "ddot(q)"])
+    assert result.exit_code != 0
+    assert "'ddot(q)' is not allowed here" in result.output and "not declared" not in result.output

@@ -251,6 +251,7 @@ def parse_candidate(derivation: Derivation, text: str) -> sp.Expr:
     values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]}
     rates = {(n, 1): S.rate(n) for n in names}
     try:
-        return build(parse(text), Scope(values=values, rates=rates))
+        return build(parse(text), Scope(values=values, rates=rates, declared=frozenset(names),
+                                        rate_note="a candidate holds coordinates, their rates and parameters"))
     except (ParseError, BuildError) as exc:
         raise OptionError([f"--candidate {text}: {exc.message}"]) from None
