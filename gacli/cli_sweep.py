@@ -104,7 +104,9 @@ def sweep(file: _File, run: _Run, grid: _Grid = None, random: _Random = None, sa
     sweep_usage(run, given, jobs, scheduler)
     numbers = {k: v for k, v in {"t_end": t_end, "method": method, "rtol": rtol, "atol": atol,
                                  "points": 101 if points is None else points}.items() if v is not None}
-    with _SHARED["boundary"]():
+    from gacli.cli_options import usage_errors
+
+    with _SHARED["boundary"](), usage_errors():
         _sweep(file, run, dict(grid=grid or (), random=random or (), samples=samples, seed=seed), dict(
             set_=",".join(set_ or ()), at=at or "", states=states, init=init, input=input, function=function,
             numbers=numbers), output, jobs, scheduler, timeout)
@@ -115,7 +117,12 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     from gacli import sweep as S
     from gacli.sweep import console
 
-    plan = S.plan(**plan_options)
+    from gacli.simulate.spec import OptionError
+
+    try:
+        plan = S.plan(**plan_options)
+    except S.SweepError as exc:  # a malformed --grid, --random, --samples or --seed: a usage error (exit 2)
+        raise OptionError([str(exc).removeprefix("error: ")]) from None
     if output is not None:
         S.check_path(output)
     if scheduler:

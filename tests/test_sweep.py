@@ -159,6 +159,8 @@ def test_a_point_that_fails_is_a_row_with_its_reason(tmp_path):
     (["--run", "linearize", "--grid", "m=1:2:2", "--jobs", "2", "--scheduler", "tcp://x:1"], 2, "give one"),
     (["--run", "bounce", "--grid", "m=1:2:2"], 2, "choose one of: linearize, simulate"),
     (["--run", "linearize", "--grid", "m=1:2:2", "--states", "wobble"], 1, "not in the state: wobble"),
+    (["--run", "linearize", "--grid", "m=1:2"], 2, "expected NAME=START:STOP:COUNT"),
+    (["--run", "linearize", "--random", "m=1:2", "--samples", "2", "--seed", "-1"], 2, "--seed -1"),
 ])
 def test_mistakes_are_one_message_and_no_traceback(args, code, message):
     result = invoke("sweep", DISK, *args)
