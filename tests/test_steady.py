@@ -94,3 +94,10 @@ def test_steady_reads_standard_input_and_locates_its_refusal():
     bicycle = CliRunner().invoke(app, ["integrals", str(SYSTEMS / "whipple_bicycle.yaml")])
     assert bicycle.exit_code == 1
     assert f"{SYSTEMS / 'whipple_bicycle.yaml'}:1:1: error: integrals: " in bicycle.output, bicycle.output
+
+
+def test_a_four_bar_s_equilibria_are_a_relation_not_a_solve_without_end():
+    # SymPy's solve of the 49-operation equilibrium in th1, th2, th3 (sin and cos of th1 beside the
+    # others) simplified for minutes: steady ran to its budget on a shipped system.
+    found = steady_motions(derived("four_bar_linkage"))
+    assert found.families

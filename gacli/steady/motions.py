@@ -27,6 +27,10 @@ from gacli.mechanics.equations import Derivation
 _MAX_FAMILIES = 24
 _MAX_DEPTH = 12
 _TRIGSIMP_OPS = 80
+# Operations past which an equation is neither cancelled, factored nor solved: a four-bar's forcing
+# (4,000 operations over its loop's determinant) kept SymPy's cancel running past any budget.
+_ALGEBRA_OPS = 600
+_SOLVE_OPS = 120  # SymPy's solve of a trigonometric equation runs trigsimp over it: far less than that
 
 
 @dataclass(frozen=True)
@@ -127,7 +131,7 @@ def _next_step(equations, unknowns, values):
 
 @functools.lru_cache(maxsize=1024)
 def _solve(f: sp.Expr, u: sp.Symbol) -> list[sp.Expr]:
-    if not f.has(u) or len(f.free_symbols & {u}) != 1:
+    if not f.has(u) or len(f.free_symbols & {u}) != 1 or sp.count_ops(f) > _SOLVE_OPS or _mixed(f, u):
         return ()
     try:
         found = sp.solve(f, u)
@@ -136,9 +140,27 @@ def _solve(f: sp.Expr, u: sp.Symbol) -> list[sp.Expr]:
     return tuple(s for s in found if s.is_real is not False and not s.has(sp.zoo, sp.nan))[:4]
 
 
+def _mixed(f: sp.Expr, u: sp.Symbol) -> bool:
+    """Whether u stands in f in more than one way (sin u and cos u, or u and sin u) beside other
+    angles: SymPy's solve then rewrites through half-angles and simplifies without end (a four-bar's
+    49-operation equilibrium in θ₁, θ₂, θ₃ ran for minutes)."""
+    ways = {a for a in f.atoms(sp.Function) if a.has(u)} | ({u} if u in _bare(f, u) else set())
+    others = {a for a in f.atoms(sp.sin, sp.cos) if not a.has(u)}
+    return len(ways) > 1 and bool(others)
+
+
+def _bare(f: sp.Expr, u: sp.Symbol) -> set:
+    """{u} when u stands in f outside any function, else the empty set."""
+    if f == u:
+        return {u}
+    if isinstance(f, sp.Function):
+        return set()
+    return set().union(*(_bare(a, u) for a in f.args)) if f.args else set()
+
+
 @functools.lru_cache(maxsize=4096)
 def _factors(e: sp.Expr, unknowns: tuple) -> list[sp.Expr]:
-    numerator, _ = sp.fraction(sp.factor(e))
+    numerator, _ = sp.fraction(sp.factor(e) if sp.count_ops(e) <= _ALGEBRA_OPS else e)
     out = []
     for f in sp.Mul.make_args(numerator):
         base, power = f.as_base_exp()
@@ -182,7 +204,7 @@ def _vanishes(e: sp.Expr) -> bool:
 
 @functools.lru_cache(maxsize=4096)
 def _tidy(e: sp.Expr) -> sp.Expr:
-    if not e.free_symbols:
+    if not e.free_symbols or sp.count_ops(e) > _ALGEBRA_OPS:
         return e
     # sin² + cos² folded while it is cheap: fewer spurious factors, so fewer branches to follow.
     try:
