@@ -83,8 +83,14 @@ def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = (), search
             broken.append((f"momentum of {name}", why))
         else:
             _sort(Integral(f"momentum of {name}", *_checked(derivation, momentum)), found, broken,
-                  "the constraints break it: its rate along the equations is not zero")
+                  f"{_breakers(derivation)} break it: its rate along the equations is not zero")
     return Integrals(tuple(found), tuple(broken), checked)
+
+
+def _breakers(derivation: Derivation) -> str:
+    """What can make a momentum's rate nonzero: loads and the potential always, constraints if any
+    (a particle's p_y under gravity was said to be broken by constraints it did not have)."""
+    return "the constraints or the loads" if derivation.system.constraints else "the loads or the potential"
 
 
 # gacli.simulate.energy's reason when the only work is a moving support's: then Jacobi's integral.
