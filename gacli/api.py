@@ -1,6 +1,7 @@
 """The Python API that ``import gacli`` names: derive, Derivation, emit.
 
-``derive`` and ``Derivation`` are those of :mod:`gacli.mechanics.equations`; importing
+``Derivation`` is that of :mod:`gacli.mechanics.equations`, and ``derive`` its derive, taking
+a path too (through :func:`gacli.emit.derived`, which every call here that takes a system uses); importing
 :mod:`gacli.notebook` here gives a derivation its typeset face in Jupyter
 (the mechanics stage does not import its own display). The dispatch
 over formats is :func:`gacli.emit.emit`, beside the emitters it chooses from;
@@ -31,19 +32,6 @@ def derive(system, *, progress=None) -> Derivation:
 # `gacli.linearize` and `gacli.simulate` are also the modules that do the work; gacli/__init__.py
 # makes those modules callable, and a call lands here.
 
-def _derivation(system) -> Derivation:
-    """A Derivation from a path, a System (gacli.load) or a Derivation (gacli.derive)."""
-    from pathlib import Path
-
-    from gacli.loader.loading import load
-
-    if isinstance(system, Derivation):
-        return system
-    if isinstance(system, (str, Path)):
-        system = load(system)
-    return derive(system)
-
-
 def linearize(system, at=None, parameters=None):
     """A and B about an operating point, as ``gacli linearize`` prints them.
 
@@ -59,7 +47,7 @@ def linearize(system, at=None, parameters=None):
     from gacli.linearize import linearize as run
     from gacli.sweep.work import resolved_parameters
 
-    derivation = _derivation(system)
+    derivation = derived(system)
     return run(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))
 
 
@@ -85,7 +73,7 @@ def simulate(system, *, parameters=None, initial=None, inputs=None, functions=No
     spec = SimulationSpec(parameters=text(parameters), initial=text(initial), inputs=text(inputs),
                           functions=text(functions), t_end=float(t_end), method=method, rtol=float(rtol),
                           atol=float(atol), points=int(points))
-    return run(_derivation(system), spec)
+    return run(derived(system), spec)
 
 
 # -- steady motions, their stability, first integrals (gacli.steady; docs/steady.md) ---------
@@ -98,7 +86,7 @@ def steady(system):
     """
     from gacli.steady.motions import steady_motions
 
-    return steady_motions(_derivation(system))
+    return steady_motions(derived(system))
 
 
 def stability(system, at=None, parameters=None, symbolic=False):
@@ -113,7 +101,7 @@ def stability(system, at=None, parameters=None, symbolic=False):
     from gacli.steady.stability import stability as numeric, stability_symbolic
     from gacli.sweep.work import resolved_parameters
 
-    derivation = _derivation(system)
+    derivation = derived(system)
     if symbolic:
         return stability_symbolic(derivation, dict(at or {}))
     return numeric(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))
@@ -126,5 +114,5 @@ def integrals(system, candidates=()):
     """
     from gacli.steady.integrals import integrals as find, parse_candidate
 
-    derivation = _derivation(system)
+    derivation = derived(system)
     return find(derivation, [c if not isinstance(c, str) else parse_candidate(derivation, c) for c in candidates])

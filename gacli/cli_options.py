@@ -4,8 +4,10 @@ parser) and how ``linearize`` shows its result; a usage error in an option strin
 from __future__ import annotations
 
 import contextlib
+import errno
 import math
 import os
+import sys
 
 import typer
 
@@ -148,10 +150,6 @@ def with_standard_output(run) -> None:
     A full disk or a device that refuses writes (``> /dev/full``) is ``error: stdout: No space left on
     device``, exit 1; a reader that stopped reading (``| head``) ends the command quietly with exit 1,
     as click does for the writes it sees, also when the last buffered write fails at exit."""
-    import errno
-    import os
-    import sys
-
     code: int | str | None = 0
     try:
         try:

@@ -122,7 +122,7 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     try:
         plan = S.plan(**plan_options)
     except S.SweepError as exc:  # a malformed --grid, --random, --samples or --seed: a usage error (exit 2)
-        raise OptionError([str(exc).removeprefix("error: ")]) from None
+        raise OptionError([str(exc)]) from None
     if output is not None:
         S.check_path(output)
     if scheduler:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import sympy as sp
 
@@ -45,13 +47,9 @@ def require_regular(derivation: Derivation) -> None:
     of M that is zero at every state is one located error, as check reports it, not a solver's
     traceback (NonInvertibleMatrixError) partway through."""
     found: list[Diagnostic] = []
-
-    class _Collected:
-        @staticmethod
-        def error(message: str, where: str = "", hint: str = "", location: Location | None = None) -> None:
-            found.append(Diagnostic(location or derivation.system.location, message, where, hint))
-
-    _zero_rows(derivation, _equations(derivation)[0], _Collected)
+    collected = SimpleNamespace(error=lambda message, where="", hint="", location=None: found.append(
+        Diagnostic(location or derivation.system.location, message, where, hint)))
+    _zero_rows(derivation, _equations(derivation)[0], collected)
     if found:
         raise SystemFileError(found)
 

@@ -38,6 +38,7 @@ def point_words(point: str) -> str:
 
 _FIXED = {"actual": ("", "", ""), "gamma": ("_gamma", "", " for gamma"), "rest": ("_rest", "", ", speeds' rates zero")}
 
+
 def _pass(key: str) -> tuple[str, str, str]:
     """(name suffix, words before, words after) of a pass of rates (gacli.mechanics.program.vectors.Pass)."""
     if key in _FIXED:
@@ -61,7 +62,8 @@ WORDS = (("partial", "partial: for one speed, eq. (14.8)"),
          ("per unit dot(", "per unit dot(q): for the rolling rows"))
 
 
-def _rest(kind: str, key: str) -> str:  # nothing after a rest, which says so itself
+def _rest(kind: str, key: str) -> str:
+    """", accelerations zero" after α and a with every q̈ zero; nothing after a rest, which says so itself."""
     return "" if key == "rest" else _REST.get(kind, "")
 
 

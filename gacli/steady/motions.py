@@ -144,18 +144,10 @@ def _mixed(f: sp.Expr, u: sp.Symbol) -> bool:
     """Whether u stands in f in more than one way (sin u and cos u, or u and sin u) beside other
     angles: SymPy's solve then rewrites through half-angles and simplifies without end (a four-bar's
     49-operation equilibrium in θ₁, θ₂, θ₃ ran for minutes)."""
-    ways = {a for a in f.atoms(sp.Function) if a.has(u)} | ({u} if u in _bare(f, u) else set())
+    functions = {a for a in f.atoms(sp.Function) if a.has(u)}
+    bare = f.xreplace({a: sp.Dummy() for a in functions}).has(u)  # u outside any function
     others = {a for a in f.atoms(sp.sin, sp.cos) if not a.has(u)}
-    return len(ways) > 1 and bool(others)
-
-
-def _bare(f: sp.Expr, u: sp.Symbol) -> set:
-    """{u} when u stands in f outside any function, else the empty set."""
-    if f == u:
-        return {u}
-    if isinstance(f, sp.Function):
-        return set()
-    return set().union(*(_bare(a, u) for a in f.args)) if f.args else set()
+    return len(functions) + bare > 1 and bool(others)
 
 
 @functools.lru_cache(maxsize=4096)

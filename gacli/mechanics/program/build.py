@@ -66,9 +66,9 @@ def _setup(system: System, independent: tuple[str, ...] | None,
 def _level(tree: FrameTree, plane: str, origins: dict) -> bool:
     """Whether a frame's plane z = 0 is N's, its normal ±N.z: turned from N by constant angles alone
     (a z-down ground, [[x, pi]]), with no origin of its own."""
-    chain = tree.chain(plane)[:-1]
+    chain, nz = tree.chain(plane)[:-1], tree.nz(plane)
     return (all(tree.constant(f) for f in chain) and not any(f in origins for f in chain)
-            and tree.nz(plane)[:2] == (0, 0) and tree.nz(plane)[2] in (1, -1))
+            and nz[:2] == (0, 0) and nz[2] in (1, -1))
 
 
 def _columns(motion: Motion, contacts: list, forms: FormRows, reduced: list[str]) -> tuple[R.Rows, dict]:
@@ -104,7 +104,7 @@ def program_of(system: System, judge=None) -> Program:
     planar = planar_frames(system)  # a planar chain written out, read as the frames its angle sums turn
     read = [] if planar is None else [p for p in _framed(replace(system, frames=planar), independent) if p is not None]
     grams = (False, True) if system.frames is None and not _far_cheaper(read, stated) else (False,)
-    programs = [stated] + [_program(system, independent, None, True) for g in grams if g]
+    programs = [stated] + ([_program(system, independent, None, True)] if True in grams else [])
     for turning in range(TURNINGS):
         built = [_program(system, independent, turning, g) for g in grams]
         if built[0] is None:
