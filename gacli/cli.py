@@ -90,9 +90,11 @@ def _budget(path: Path, seconds: float):
         yield state
 
 
-def _derive(path: Path, state, needs: str | None = None):
+def _derive(path: Path, state, needs: str | None = None, *, solves: bool = False):
     """Read, load and derive once (gacli.pipeline) within the budget, telling it (and the spinner) each step;
-    ``needs`` is what the command reads of the equations: gacli.pipeline's CODE, PRINTOUT, STEPS or CLOSED (None)."""
+    ``needs`` is what the command reads of the equations: gacli.pipeline's CODE, PRINTOUT, STEPS or CLOSED
+    (None). A command that solves M u̇ = F (``solves``, and every one of CLOSED) meets a row of M zero at
+    every state as check's located error, not a solver's."""
     from gacli.display import console
     from gacli.pipeline import CLOSED, run
 
@@ -102,7 +104,7 @@ def _derive(path: Path, state, needs: str | None = None):
             spinner(name)
 
         derivation = run(path, needs=needs or CLOSED, progress=step).derivation
-    if (needs or CLOSED) == CLOSED:  # the commands that solve M u̇ = F in closed form or numerically
+    if solves or needs in (None, CLOSED):
         from gacli.check.mass import require_regular
 
         require_regular(derivation)
@@ -290,6 +292,7 @@ def simulate(
     """
     from gacli import simulate as sim
     from gacli.cli_options import check_outputs, write_outputs
+    from gacli.pipeline import STEPS
     from gacli.simulate import console as simulate_console
 
     with _boundary(), usage_errors():
@@ -299,7 +302,7 @@ def simulate(
         sim.require("scipy.integrate")
         check_outputs(csv, plot, file)
         with _budget(file, timeout) as state, simulate_console.notes_from_warnings():
-            derivation = _derive(file, state)
+            derivation = _derive(file, state, STEPS, solves=True)
             state("simulating")
             with simulate_console.progress(spec.t_end) as advance:
                 result = sim.simulate(derivation, spec, progress=advance)

@@ -115,6 +115,7 @@ def sweep(file: _File, run: _Run, grid: _Grid = None, random: _Random = None, sa
 def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
            output: Optional[Path], jobs: int, scheduler: Optional[str], timeout: float) -> None:
     from gacli import sweep as S
+    from gacli.pipeline import CODE, STEPS
     from gacli.sweep import console
 
     from gacli.simulate.spec import OptionError
@@ -130,7 +131,8 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
     spec = _spec(mode, options)
     states = [n.strip() for n in options["states"].split(",") if n.strip()] if options["states"] else []
     with _SHARED["budget"](file, timeout) as state:
-        derivation = _SHARED["derive"](file, state)
+        # Generated code runs every point; simulate's integrals read the closed forms where they are small.
+        derivation = _SHARED["derive"](file, state, STEPS if mode == "simulate" else CODE, solves=True)
         state(f"setting up the sweep ({mode})")
         task = S.task_for(derivation, mode, plan, set_=options["set_"], at=options["at"], states=states, spec=spec)
         job = S.Job(f"{time.time_ns()}-{id(task)}", derivation, task)

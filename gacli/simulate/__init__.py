@@ -18,11 +18,11 @@ command line (``SimulationSpec``) or from the system file:
 Every expression goes through gacli's own grammar (:mod:`gacli.read.expr`), never
 ``eval``. Along the computed path the report measures (docs/simulate.md):
 
-* the drift of the energy E = Σ ½ m v·v + ½ ω·Iω + V when the system
-  conserves it (:func:`conservation_problems` says why not otherwise);
+* the drift of the energy E = ½ uᵀ M u + V when the system conserves it
+  (:func:`conservation_problems` says why not otherwise; M from generated code);
 * for each Pfaffian constraint, its residual A(q, t) ṙ + a₀ with the
   coordinate rates differentiated from the dense solution and the
-  quasi-coordinate rates from β u + β₀ (eq. 14.7);
+  quasi-coordinate rates from the state or their differentials (eq. 14.2);
 * for each finite constraint f(q, t) = 0, the drift of f.
 
 Nothing here prints: :mod:`gacli.simulate.console` shows progress and the

@@ -40,15 +40,28 @@ def conservation_problems(derivation: Derivation) -> list[str]:
         out.append("a potential that depends on t")
     if any(c.form.dt != 0 or S.T in _free(*(e for _, e in c.form.coefficients)) for c in system.constraints):
         out.append("constraints that depend on t")
-    if any(_moves_with_time(m) for m in derivation.motions):
-        out.append("velocities with terms free of the independent rates (a moving support)")
+    if moving_support(system):
+        out.append(MOVING_SUPPORT)
     return out
 
 
-def _moves_with_time(motion) -> bool:
-    parts = [motion.linear] + ([motion.angular] if motion.angular is not None else [])
-    return any(S.T in _free(*m.partials, *m.velocity0) or any(sp.simplify(e) != 0 for e in m.velocity0)
-               for m in parts)
+MOVING_SUPPORT = "velocities with terms free of the independent rates (a moving support)"
+
+
+def moving_support(system) -> bool:
+    """Whether some velocity has a term free of the independent rates (v = V u + v₀ with v₀ ≠ 0):
+    t in a body's position or rotation, or a form with a dt term (a rotation, a quasi-coordinate's
+    differential or a constraint, whose β₀ then enters the dependent rates, eq. 14.7).
+
+    Read from the file's declarations, not from the chapter's motions, so that a derivation by the
+    program alone (a bicycle's simulate) says the same: for every system of the repository both agree."""
+    forms = [c.form for c in system.constraints]
+    forms += [q.differential for q in system.quasi_coordinates if q.differential is not None]
+    for body in system.bodies:
+        if S.T in _free(*body.position):
+            return True
+        forms += list(body.rotation or ())
+    return any(f.dt != 0 or S.T in _free(*(c for _, c in f.coefficients)) for f in forms)
 
 
 def _free(*exprs) -> set[sp.Symbol]:
@@ -60,7 +73,7 @@ def _parameter_symbols(system) -> set[sp.Symbol]:
 
 
 def energy_expressions(derivation: Derivation) -> tuple[sp.Expr, sp.Expr]:
-    """T = Σ ½ m v·v + ½ ω·Iω with v = V u + v₀, ω = W u + ω₀; and V (constant forces included)."""
+    """T = Σ ½ m v·v + ½ ω·Iω with v = V u + v₀, ω = W u + ω₀ from the closed route's motions; and V."""
     # Terms gathered and added once: `total += term` rebuilds the growing sum each time,
     # quadratic in the number of bodies and loads (1,000 loads took over 20 s).
     u = sp.Matrix(derivation.speeds)
@@ -71,9 +84,26 @@ def energy_expressions(derivation: Derivation) -> tuple[sp.Expr, sp.Expr]:
         if motion.angular is not None:
             w = motion.angular.partials * u + motion.angular.velocity0
             kinetic.append((w.T * motion.body.inertia * w)[0, 0] / 2)
-    potential = [derivation.system.potential]
-    potential += [-sp.Matrix(force.vector).dot(sp.Matrix(force.point)) for force in derivation.system.forces]
-    return sp.Add(*kinetic), sp.Add(*potential)
+    return sp.Add(*kinetic), potential_energy(derivation.system)
+
+
+def potential_energy(system) -> sp.Expr:
+    """V: the file's potential and −F·r of each force, constant where E is conserved."""
+    return sp.Add(system.potential, *(-sp.Matrix(f.vector).dot(sp.Matrix(f.point)) for f in system.forces))
+
+
+def kinetic_energy(mass_matrix, t: np.ndarray, states: np.ndarray, k: int) -> np.ndarray:
+    """T = ½ uᵀ M u at each state, M from generated code's ``mass_matrix(t, x)``.
+
+    Where E is conserved no velocity has a term free of u (:func:`moving_support`), so
+    T = ½ Σ m (V u)·(V u) + ½ (W u)·I(W u) is the quadratic form of M = Σ m VᵀV + WᵀIW
+    (eq. 14.19): the same whichever route derived M, and for a constraint nonlinear in the
+    rates too, which is conservative only when homogeneous of degree one in them."""
+    out = np.empty(len(t))
+    for i, (ti, x) in enumerate(zip(t, states)):
+        u = np.asarray(x[len(x) - k:], dtype=float)
+        out[i] = 0.5 * u @ np.asarray(mass_matrix(ti, x), dtype=float) @ u
+    return out
 
 
 # -- rates along the path -------------------------------------------------------------

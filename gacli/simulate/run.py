@@ -16,8 +16,10 @@ import sympy as sp
 from gacli.algebra import symbols as S
 from gacli.algebra.coerce import as_expr
 from gacli.mechanics.equations import Derivation
+from gacli.mechanics.rates import solve_rates
+from gacli.mechanics.read_off import dependent_rates
 from gacli.numeric.compiled import scalar, vectorized
-from gacli.simulate.energy import conservation_problems, energy_expressions, path_rates
+from gacli.simulate.energy import conservation_problems, kinetic_energy, path_rates, potential_energy
 from gacli.simulate.results import ConstraintResidual, Simulation, short
 from gacli.simulate.spec import OptionError, SimulationError, SimulationSpec, require
 from gacli.simulate.values import OptionValues
@@ -66,14 +68,15 @@ _FOUND: dict[int, tuple[Derivation, tuple]] = {}
 
 def integrals_of(derivation: Derivation) -> tuple[tuple[str, sp.Expr], ...]:
     """The first integrals besides the energy (gacli.steady.integrals), once per derivation (a sweep
-    simulates one derivation many times); none searched for a system too large to print."""
+    simulates one derivation many times); none searched for a system too large to print, whose
+    closed forms were not formed (gacli.pipeline's STEPS)."""
     from gacli.algebra.readable import displayable
     from gacli.steady.integrals import integrals
 
     held = _FOUND.get(id(derivation))
     if held is not None and held[0] is derivation:
         return held[1]
-    if not displayable(derivation) or derivation.system.free_functions:
+    if not derivation.closed or not displayable(derivation) or derivation.system.free_functions:
         found = ()
     else:
         found = tuple((i.name, i.expression) for i in integrals(derivation).found if i.name != "energy T + V")
@@ -221,8 +224,10 @@ class _Problem:
             np.asarray(f(t, *states.T, *self.p, *more), dtype=float), t.shape))
 
     def energies(self, t: np.ndarray, states: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        kinetic, potential = energy_expressions(self.derivation)
-        return self._vectorized(kinetic)(t, states), self._vectorized(potential)(t, states)
+        """T from generated code's M and V from the file, for a system that conserves E."""
+        mass_matrix = lambda ti, x: self.module.mass_matrix(ti, x, self.p, self.r)  # noqa: E731
+        kinetic = kinetic_energy(mass_matrix, t, states, self.derivation.k)
+        return kinetic, self._vectorized(potential_energy(self.derivation.system))(t, states)
 
     def residuals(self, t: np.ndarray, states: np.ndarray, dense) -> dict[str, ConstraintResidual]:
         system = self.derivation.system
@@ -243,11 +248,17 @@ class _Problem:
         return out
 
     def _rate_form(self, form) -> tuple[sp.Expr, list[sp.Symbol]]:
-        """A ṙ + a₀ with coordinate rates as fresh symbols and quasi rates from β u + β₀."""
-        system, rates = self.derivation.system, self.derivation.rates
+        """A ṙ + a₀ with coordinate rates as fresh symbols, an independent quasi-coordinate's rate from
+        the state and a dependent one's from its differential (eq. 14.2)."""
+        system, independent = self.derivation.system, self.derivation.independent
         fd = [sp.Dummy(f"fd_{c.name}") for c in system.coordinates]
+        coordinate_rates = {c.name: d for c, d in zip(system.coordinates, fd)}
+        rates = dependent_rates(system, independent, coordinate_rates)
+        if rates is None:  # a dependent quasi-coordinate without a differential: its rate is β u + β₀
+            rates = tuple((q.name, (self.derivation.rates or solve_rates(system)).rate(q.name))
+                          for q in system.quasi_coordinates)
         replace = {S.rate(c.name): d for c, d in zip(system.coordinates, fd)}
-        replace.update({S.rate(q.name): rates.rate(q.name) for q in system.quasi_coordinates})
+        replace.update({S.rate(q): e for q, e in rates if q not in coordinate_rates})
         expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
         return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
 

@@ -242,7 +242,7 @@ class OptionValues:
 
     def _why_not(self, node) -> str:
         base = node.name if isinstance(node, Rate) else node.id
-        if isinstance(node, Rate) and node.order == 1 and base in self.derivation.rates.names:
+        if isinstance(node, Rate) and node.order == 1 and base in self.system.rate_names:
             return (": its rate follows from the constraints "
                     f"(the independent rates are {', '.join(self.derivation.independent)})")
         if isinstance(node, Name) and self._kind(base) == "a quasi-coordinate":

@@ -60,7 +60,7 @@ class Integrals:
 def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = (), search: bool = True) -> Integrals:
     """The energy and the momenta that hold, the statements where they do not, and the candidates
     (only the candidates with ``search=False``)."""
-    from gacli.simulate.energy import conservation_problems, energy_expressions
+    from gacli.simulate.energy import MOVING_SUPPORT, conservation_problems, energy_expressions
     from gacli.steady import require_small
 
     require_small(derivation, "integrals")
@@ -72,7 +72,7 @@ def integrals(derivation: Derivation, candidates: Sequence[sp.Expr] = (), search
     T, V = energy_expressions(derivation)
     if not problems:
         _sort(Integral("energy T + V", *_checked(derivation, T + V)), found, broken)
-    elif problems == [_MOVING_SUPPORT]:
+    elif problems == [MOVING_SUPPORT]:  # the only work a moving support's: Jacobi's integral
         broken.append(("energy", "work is done on the system: " + problems[0]))
         _sort(Integral("Jacobi's integral T2 - T0 + V", *_checked(derivation, _jacobi(derivation, T, V))),
               found, broken, "the support's motion is not steady: its rate along the equations is not zero")
@@ -91,10 +91,6 @@ def _breakers(derivation: Derivation) -> str:
     """What can make a momentum's rate nonzero: loads and the potential always, constraints if any
     (a particle's p_y under gravity was said to be broken by constraints it did not have)."""
     return "the constraints or the loads" if derivation.system.constraints else "the loads or the potential"
-
-
-# gacli.simulate.energy's reason when the only work is a moving support's: then Jacobi's integral.
-_MOVING_SUPPORT = "velocities with terms free of the independent rates (a moving support)"
 
 
 def _jacobi(derivation: Derivation, T: sp.Expr, V: sp.Expr) -> sp.Expr:
