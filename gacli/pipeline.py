@@ -57,6 +57,7 @@ PROGRAM_ALONE = 800
 # What a command reads of the derivation, which decides how much of it is formed.
 CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, --reactions, linearize --symbolic, ...)
 CODE = "code"  # q̇, M and F as generated code computes them
+MATRICES = "matrices"  # the same, of the System with its rolling rows (check, which classifies every row)
 PRINTOUT = "printout"  # q̇, M, F and Q as derive, gibbs and LaTeX print them, read off the program
 STEPS = "steps"  # the closed forms, unless the program is so large that a printout names its quantities
 # (--steps, steady, integrals, check, and simulate, whose integrals read them where small)
@@ -74,7 +75,8 @@ def run(path: str | Path, *, needs: str = CLOSED, progress: Callable[[str], None
 
     ``needs``: for CODE, a system the program builder takes is derived by the program alone
     (:func:`gacli.mechanics.equations.derive_for_code`): generated code computes it, and
-    neither the closed forms nor the rolling rows are formed. For PRINTOUT, q̇, M, F and Q
+    neither the closed forms nor the rolling rows are formed; for MATRICES the same program, of the
+    System with its rolling rows. For PRINTOUT, q̇, M, F and Q
     are read off that program (:func:`gacli.mechanics.read_off.read_off`) and the closed
     route is not run, where they print written out within the bound (docs/printing.md); where
     they would not, the closed forms are formed as before, since inlined they can print far
@@ -102,6 +104,8 @@ def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[s
     system = complete()
     if loaded is not None:
         loaded(system)
+    if needs == MATRICES and (program := derive_for_code(system)) is not None:
+        return Run(source, system, program)
     if needs in (PRINTOUT, STEPS) and (program := derive_for_code(system)) is not None:
         if program_operations(program.program) >= PROGRAM_ALONE:
             return Run(source, system, program)

@@ -284,12 +284,33 @@ def test_no_budget_outside_the_main_thread():
     assert reports[0].errors == ()
 
 
+@pytest.mark.parametrize("name", ["four_bar_linkage", "chaplygin_ball", "sphere_on_turntable"])
+def test_check_reads_the_equations_generated_code_computes_not_the_closed_forms(name, monkeypatch):
+    """Without --verify, check runs the one engine users integrate: the closed route never runs."""
+    def refused(*args, **kwargs):
+        raise AssertionError("the closed route ran")
+
+    monkeypatch.setattr("gacli.pipeline.derive", refused)
+    report = check_file(SYSTEMS / f"{name}.yaml")
+    assert not report.errors, report.errors
+    assert report.mass_matrix.symmetric and report.mass_matrix.positive_definite
+
+
+def test_m_is_tested_where_the_euler_parameters_are_kept_on_their_sphere():
+    """A chain of quaternion links: generated code's M is positive definite on e·e = 1, not off it,
+    and check's sample states (each entry in [0.3, 1.7]) were off it."""
+    report = check_file(ROOT / "benchmarks" / "kane_set" / "variants" / "free7" / "f7_chain3_quat.yaml")
+    assert not report.errors, [d.message for d in report.errors]
+    assert report.mass_matrix.positive_definite and report.mass_matrix.samples == 3
+
+
 def test_a_crash_is_reported_as_an_internal_error(tmp_path, monkeypatch):
     def broken(*args, **kwargs):
         raise ZeroDivisionError("boom")
 
     monkeypatch.setattr("gacli.pipeline.derive", broken)
-    monkeypatch.setattr("gacli.pipeline.read_off", broken)  # the printout's route, check's too
+    monkeypatch.setattr("gacli.pipeline.read_off", broken)  # the printout's route
+    monkeypatch.setattr("gacli.pipeline.derive_for_code", broken)  # check's, generated code's program
     result = invoke(str(write(tmp_path, "good.yaml", GOOD)))
     assert result.exit_code == 1
     assert "good.yaml:1:1: error: internal error in the step" in result.stderr

@@ -11,8 +11,10 @@ from gacli.check.report import MassMatrixCheck
 from gacli.mechanics.equations import Derivation
 from gacli.errors import Diagnostic, Location, SystemFileError
 from gacli.algebra.graph import free_symbols, postorder
+from gacli.mechanics.program.record import inline
 from gacli.model import System
 from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
+from gacli.numeric.spheres import on_spheres
 from gacli.numeric.zero import decide_zero
 
 PD_SAMPLES = 3
@@ -57,11 +59,14 @@ def require_regular(derivation: Derivation) -> None:
 def _equations(derivation: Derivation):
     """M, F and q̇: the closed forms or those read off the program, or for a derivation by the program
     alone its outputs inlined (expression graphs: walked by gacli.algebra.graph and evaluated
-    numerically, never printed)."""
+    numerically, never printed). Not generated code's choice among the program's forms: they
+    have the same values, and weighing them is most of a small system's check."""
     if derivation.printable:
         return derivation.mass_matrix, derivation.forcing, derivation.kinematic_equations
-    code = derivation.code
-    return code.dense_mass_matrix(), sp.ImmutableMatrix(code.forcing), code.kinematic_equations
+    program = derivation.program
+    rates, M, F = inline(program)
+    kinematic = tuple((name, e) for (name, _), e in zip(program.rates, rates))
+    return sp.ImmutableMatrix(program.k, program.k, M), sp.ImmutableMatrix(F), kinematic
 
 
 def _zero_rows(derivation: Derivation, M, findings) -> None:
@@ -98,7 +103,9 @@ def _positive_definite(system: System, M, values, symmetric, findings,
     placed = free_symbols([c for body in system.bodies for c in body.position]) - set(values) - set(others)
     evaluated = 0
     for point, more in zip(sample_points(others, PD_SAMPLES), sample_points(placed, PD_SAMPLES, seed=11)):
-        state = {**values, **more, **point}
+        # Euler parameters on their unit sphere, where the file keeps them: generated code's M is
+        # positive definite there, not necessarily off it (a chain of quaternion links).
+        state = on_spheres({**values, **more, **point}, system)
         try:
             _require_real_positions(system, state)
             numeric = np.array([[float(evaluate(M[i, j], state)[0]) for j in range(M.cols)] for i in range(M.rows)])
@@ -107,7 +114,7 @@ def _positive_definite(system: System, M, values, symmetric, findings,
         evaluated += 1
         smallest = float(np.linalg.eigvalsh((numeric + numeric.T) / 2).min()) if M.rows else 1.0
         if smallest <= 1e-12 * max(1.0, float(np.abs(numeric).max())):
-            shown = ", ".join(f"{s.name}={v:.4g}" for s, v in point.items())
+            shown = ", ".join(f"{s.name}={float(state[s]):.4g}" for s in point)
             at = f"at the sample state {shown}" if shown else "at every state (M is constant)"
             findings.error(f"M is not positive definite {at} "
                            f"(smallest eigenvalue {smallest:.3g})", "mass_matrix",

@@ -29,7 +29,7 @@ from gacli.check.integrability import Classification, classify
 from gacli.check.mass import check_mass_matrix
 from gacli.check.paths import find
 from gacli.check.report import MAX_DIAGNOSTICS, CheckReport, FileReport, MassMatrixCheck, capped
-from gacli.pipeline import CLOSED, STEPS
+from gacli.pipeline import CLOSED, MATRICES
 from gacli.pipeline import run as run_pipeline
 from gacli.errors import (
     DerivationError,
@@ -112,10 +112,9 @@ STEP_VERIFY = "verifying by the independent route (eq. 14.10)"
 def _check(path: Path, findings: _Findings, verify: bool = False) -> None:
     findings(STEP_READ)
     _require_regular_file(path)
-    # Without verify, check reads M, F and q̇ alone: a large system's program, never its closed forms;
-    # a small system's closed forms, which --steps, verify and the API form (the printout's read-off
-    # forms would be tidied only to decide how to print them, which check does not).
-    run = run_pipeline(path, needs=CLOSED if verify else STEPS, progress=findings,
+    # Without verify, check reads M, F and q̇ alone, as generated code computes them (the closed forms
+    # only where the program builder does not take the system): what CI runs and what users integrate.
+    run = run_pipeline(path, needs=CLOSED if verify else MATRICES, progress=findings,
                        loaded=lambda system: findings.diagnostics.extend(unused_declarations(system)))
     system, derivation = run.system, run.derivation
     findings.k, findings.independent = derivation.k, derivation.independent
