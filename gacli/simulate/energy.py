@@ -74,6 +74,8 @@ def _parameter_symbols(system) -> set[sp.Symbol]:
 
 def energy_expressions(derivation: Derivation) -> tuple[sp.Expr, sp.Expr]:
     """T = Σ ½ m v·v + ½ ω·Iω with v = V u + v₀, ω = W u + ω₀ from the closed route's motions; and V."""
+    if not derivation.closed:  # read off the program or for code alone: no motions, T would read 0
+        raise ValueError("energy_expressions needs the closed route's motions (gacli.pipeline's STEPS or CLOSED)")
     # Terms gathered and added once: `total += term` rebuilds the growing sum each time,
     # quadratic in the number of bodies and loads (1,000 loads took over 20 s).
     u = sp.Matrix(derivation.speeds)
