@@ -28,6 +28,16 @@ def derive(system, *, progress=None) -> Derivation:
     return derived(system)
 
 
+def _solvable(system) -> Derivation:
+    """The derivation of a command that solves M u̇ = F: a row of M zero at every state is the
+    located SystemFileError the command line gives, not a solver's exception partway through."""
+    from gacli.check.mass import require_regular
+
+    derivation = derived(system)
+    require_regular(derivation)
+    return derivation
+
+
 # -- linearize and simulate: the commands of the same names ------------------------------
 # `gacli.linearize` and `gacli.simulate` are also the modules that do the work; gacli/__init__.py
 # makes those modules callable, and a call lands here.
@@ -47,7 +57,7 @@ def linearize(system, at=None, parameters=None):
     from gacli.linearize import linearize as run
     from gacli.sweep.work import resolved_parameters
 
-    derivation = derived(system)
+    derivation = _solvable(system)
     return run(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))
 
 
@@ -73,7 +83,7 @@ def simulate(system, *, parameters=None, initial=None, inputs=None, functions=No
     spec = SimulationSpec(parameters=text(parameters), initial=text(initial), inputs=text(inputs),
                           functions=text(functions), t_end=float(t_end), method=method, rtol=float(rtol),
                           atol=float(atol), points=int(points))
-    return run(derived(system), spec)
+    return run(_solvable(system), spec)
 
 
 # -- steady motions, their stability, first integrals (gacli.steady; docs/steady.md) ---------
@@ -101,7 +111,7 @@ def stability(system, at=None, parameters=None, symbolic=False):
     from gacli.steady.stability import stability as numeric, stability_symbolic
     from gacli.sweep.work import resolved_parameters
 
-    derivation = derived(system)
+    derivation = _solvable(system)
     if symbolic:
         return stability_symbolic(derivation, dict(at or {}))
     return numeric(derivation, dict(at or {}), resolved_parameters(derivation.system, dict(parameters or {})))

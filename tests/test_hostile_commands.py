@@ -142,3 +142,15 @@ def test_a_row_of_m_zero_at_every_state_is_one_located_error_in_every_solving_co
     assert result.exit_code == 1, result.output
     assert f"{path}:4:18: error: mass_matrix: M is singular at every state: its row for dot(y) is zero" in result.output
     assert "Traceback" not in result.output and not out.exists()
+
+
+@pytest.mark.parametrize("call", ["simulate", "linearize", "stability"])
+def test_the_api_s_solving_calls_raise_the_same_located_error(tmp_path, call):
+    import gacli
+    from gacli.errors import SystemFileError
+
+    path = tmp_path / "h.yaml"
+    path.write_text(_UNUSED_Y, encoding="utf-8")
+    with pytest.raises(SystemFileError) as raised:
+        getattr(gacli, call)(str(path))
+    assert "M is singular at every state: its row for dot(y) is zero" in str(raised.value)
