@@ -48,6 +48,31 @@ def test_a_coordinate_that_turns_only_a_particle_is_named_truly_and_fails(tmp_pa
     assert "it is in no position or rotation" not in result.stderr
 
 
+_SLIDER_CRANK = """gacli: 1
+name: slider
+parameters: {m: {value: 1}, l1: {value: 0.3}, l2: {value: 1}}
+coordinates: [th1, th2, s]
+constraints:
+  - l1*cos(th1) + l2*cos(th2) - s = 0
+  - l1*sin(th1) + l2*sin(th2) = 0
+independent: [th1]
+bodies:
+  crank: {mass: m, position: [l1*cos(th1)/2, l1*sin(th1)/2], inertia: m*l1**2/12, rotation: dth1}
+  rod: {mass: m, position: [l1*cos(th1) + l2*cos(th2)/2, l1*sin(th1) + l2*sin(th2)/2], inertia: m*l2**2/12,
+        rotation: dth2}
+"""
+
+
+def test_a_massless_slider_that_closes_a_loop_is_a_note_that_strict_passes(tmp_path: Path):
+    """The slider's travel s moves no body, but the loop needs it: not a mistake to fail CI on."""
+    path = tmp_path / "slider.yaml"
+    path.write_text(_SLIDER_CRANK, encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", "--strict", str(path)])
+    assert result.exit_code == 0, result.output
+    assert "note: coordinates.s: no body depends on coordinate 's'; constraints[0] holds it" in result.stderr
+    assert "warning" not in result.stderr
+
+
 def test_a_coordinate_in_nothing_keeps_its_message(tmp_path: Path):
     path = tmp_path / "idle.yaml"
     path.write_text(PENDULUM.replace("VALUE", "1").replace("[q1, q2, q3]", "[q1, q2, q3, s]"), encoding="utf-8")

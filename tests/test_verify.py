@@ -38,6 +38,8 @@ def test_every_system_passes(name):
     assert report.samples == 20 and report.tol == 1e-9
     assert [x.equation for x in report.accelerations] == [S.rate_name(n, 2) for n in d.independent]
     assert [x.equation for x in report.rates] == [S.rate_name(n, 1) for n in d.rates.names]
+    assert [x.equation for x in report.code] == ([S.rate_name(n, 2) for n in d.independent]
+                                                 + [S.rate_name(c.name, 1) for c in d.system.coordinates])
     assert report.mass_symmetric and report.mass_positive_definite and not report.undetermined
     lines = V.format_report(report)
     assert lines[-1] == "verify: passed"
@@ -187,6 +189,20 @@ def test_wrong_kinematic_equation_is_caught():
     kin = tuple((n, e + (S.rate("theta") if n == "psi" else 0)) for n, e in d.kinematic_equations)
     report = check(dataclasses.replace(d, kinematic_equations=kin), samples=5)
     assert [x.equation for x in report.kinematics if not x.passed] == ["dot(psi)"]
+
+
+@pytest.mark.parametrize("name", ["rolling_disk", "four_bar_linkage", "chaplygin_sleigh"])
+def test_generated_code_is_checked_beside_the_closed_forms(name):
+    """What users integrate (Derivation.code, the straight-line program's) is verified too: an F
+    off by 1% in code alone fails the code group and nothing else."""
+    d = dataclasses.replace(derived(name))
+    code = d.code
+    assert code.route == "program"
+    d.__dict__["code"] = dataclasses.replace(code, forcing=tuple(f * sp.Rational(101, 100) for f in code.forcing))
+    report = check(d, samples=5)
+    assert not report.passed
+    assert {x.equation for x in report.code if not x.passed} == {S.rate_name(n, 2) for n in d.independent}
+    assert all(x.passed for group in (report.accelerations, report.kinematics, report.rates) for x in group)
 
 
 def test_displayed_gibbs_function_is_checked():

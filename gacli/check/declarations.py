@@ -35,7 +35,7 @@ def unused_declarations(system: System) -> list[Diagnostic]:
                                   f"inputs.{i.name}", severity="note"))
     for c in system.coordinates:
         if c.name not in bodies:
-            out.append(_warning(c.location, f"coordinates.{c.name}", _moves_nothing(system, c.name)))
+            out.append(_unmoving(system, c))
     return out + _quaternions_without_rates(system) + _norms_by_their_differential(system) + _not_finite(system)
 
 
@@ -97,6 +97,30 @@ def _norms_by_their_differential(system: System) -> list[Diagnostic]:
                               f"write the constraint '{norm} = 1' instead and generated code reads on the unit "
                               "sphere (docs/program.md)", f"constraints[{i}]", severity="note"))
     return out
+
+
+def _unmoving(system: System, coordinate) -> Diagnostic:
+    """A warning for a coordinate no body depends on; a note when a constraint ties it to two or more
+    others, as a loop does: the block's travel of an inverted slider-crank placed from the crank pin
+    closes the loop, and Euler parameters are held by their unit norm. Tied to one other alone
+    (ds = l dθ), it only repeats that one: the warning stands."""
+    name, where = coordinate.name, f"coordinates.{coordinate.name}"
+    holding = [f"constraints[{i}]" for i, c in enumerate(system.constraints) if len(_tied(c, system) - {name}) >= 2
+               and name in _tied(c, system)]
+    if not holding:
+        return _warning(coordinate.location, where, _moves_nothing(system, name))
+    return Diagnostic(coordinate.location, f"no body depends on coordinate '{name}'; {', '.join(holding)} "
+                      f"{'holds' if len(holding) == 1 else 'hold'} it, and its equation is its rate alone", where,
+                      severity="note")
+
+
+def _tied(constraint, system: System) -> set[str]:
+    """The names of rates and coordinates a constraint ties together."""
+    names = set(constraint.form.names)
+    if constraint.relation is not None:
+        values = {S.value(c.name): c.name for c in system.coordinates}
+        names |= {values[x] for x in free_symbols([constraint.relation]) if x in values}
+    return names
 
 
 def _moves_nothing(system: System, name: str) -> str:

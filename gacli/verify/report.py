@@ -44,12 +44,14 @@ class VerifyReport:
     notes: tuple[str, ...] = ()
     unphysical: str = ""                   # what was wrong with the parameters of some samples
     physical_min_eigenvalue: float = math.inf  # the minimum over the other samples (inf: none)
+    code: tuple[Difference, ...] = ()      # generated code's u̇ = M⁻¹F and q̇ vs (14.10) and the relations
 
     GROUPS = (
         ("accelerations", "accelerations u̇: fundamental equation (14.10) with multipliers vs M u̇ = F (14.19)"),
         ("kinematics", "kinematic equations (14.20) vs the relations (14.1, 14.2)"),
         ("rates", "every rate ṙ = β u + β₀ (14.7) vs the relations (14.1, 14.2)"),
         ("gibbs", "the displayed G: ∂G/∂u̇_s − Q_s vs (M u̇ − F)_s (14.19)"),
+        ("code", "generated code: its u̇ = M⁻¹F vs (14.10), its q̇ vs the relations"),
     )
 
     @property

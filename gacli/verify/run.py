@@ -5,7 +5,8 @@ the coordinates, the free functions and inputs, t, the independent rates and
 their accelerations; the dependent rates are solved from the relations, so
 the state is admissible. Then r̈ and λ of the fundamental equation are
 compared with the derivation's u̇ = M⁻¹F (14.19), its kinematic equations
-(14.20), every row of ṙ = β u + β₀ (14.7), and ∂G/∂u̇_s − Q_s (14.19).
+(14.20), every row of ṙ = β u + β₀ (14.7), and ∂G/∂u̇_s − Q_s (14.19); and generated code's q̇ and u̇ = M⁻¹F
+(``Derivation.code``, :mod:`gacli.verify.generated`).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from gacli.algebra.readable import displayable
 from gacli.verify.fundamental import (
     DEFAULT_SEED, DPS, FUNCTION_ORDERS, column, fundamental_equations, kkt, redundant_relations, solve_least_squares,
 )
+from gacli.verify.generated import GeneratedCheck
 from gacli.verify.report import VerifyReport, Worst, group_floor
 
 DEFAULT_SAMPLES = 20
@@ -89,6 +91,7 @@ class _Run:
             "rates": sp.Matrix([derivation.rates.rate(n) for n in derivation.rates.names]),
             "dG": self._gibbs_gradient(),
         })
+        self.generated = GeneratedCheck(derivation, self.independent)
 
     def _gibbs_gradient(self) -> sp.Matrix:
         """∂G/∂u̇_s of the displayed G (eq. 14.19), evaluated at the sample's random u̇."""
@@ -121,7 +124,11 @@ class _Run:
         except (ZeroDivisionError, ValueError, ArithmeticError) as exc:
             self.notes.append(f"the fundamental equation could not be solved at some samples ({exc})")
             self.worst_acc.fail_all()
+            self.generated.worst.fail_all()
             return
+        free_names = {S.rate_name(self.names[j], 2) for j in free if j < self.N}
+        if note := self.generated.compare(values, [rdd[j] for j in self.ind_idx], free_names):
+            self.notes.extend([note] if note not in self.notes else [])
         try:
             th = self.theirs(values)
             if not all(mpmath.isfinite(e) for e in (*th["M"], *th["F"])):
@@ -179,7 +186,8 @@ class _Run:
             values.update({S.rate(n): solved[r] for r, n in enumerate(self.dependent)})
 
     def _fill_extra(self, values: dict, rng: np.random.Generator, sample: int) -> None:
-        extra = [s for s in set(self.ours.symbols) | set(self.theirs.symbols) if s not in values]
+        known = set(self.ours.symbols) | set(self.theirs.symbols) | set(self.generated.symbols)
+        extra = [s for s in known if s not in values]
         for s in sorted(extra, key=lambda s: s.name):
             values[s] = mpmath.mpf(rng.uniform(-1.5, 1.5))
             if sample == 0:
@@ -254,6 +262,7 @@ class _Run:
             system=self.system.name, samples=samples, tol=tol, seed=seed,
             accelerations=self.worst_acc.result(tol), kinematics=self.worst_kin.result(tol),
             rates=self.worst_rates.result(tol), gibbs=self.worst_gibbs.result(tol),
+            code=self.generated.worst.result(tol),
             mass_asymmetry=self.asymmetry, mass_min_eigenvalue=self.min_eig if k else 1.0,
             undetermined=tuple(n for n in self.names if n in self.undetermined),
             notes=tuple(dict.fromkeys(self.notes + _unphysical_note(self.bad_sample, self.min_eig))),
