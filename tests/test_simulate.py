@@ -281,3 +281,12 @@ def test_a_mass_matrix_wrong_from_the_start_blames_no_configuration():
     with pytest.raises(SimulationError, match=r"at t = 0: the mass matrix is not positive definite; the state") as caught:
         run("cylinder_in_cylinder", set=["M=-1"], t_end=1.0)
     assert "configuration" not in str(caught.value)
+
+
+def test_an_rtol_below_scipy_s_floor_is_raised_and_the_run_says_the_one_it_used():
+    from gacli.simulate.run import RTOL_FLOOR, ToleranceNote
+
+    with pytest.warns(ToleranceNote, match="--rtol 1e-20 is below what double precision resolves"):
+        sim = run("cylinder_in_cylinder", init=["theta=0.1"], t_end=0.05, rtol=1e-20)
+    assert sim.rtol == RTOL_FLOOR == pytest.approx(2.220446e-14)
+    assert "rtol 2.22045e-14" in summary_lines(sim)[0]

@@ -63,6 +63,8 @@ def warning_notes(caught) -> list[str]:
 def _library(w: warnings.WarningMessage) -> str:
     if w.category.__name__ == "InitialStateNote":
         return "initial state"
+    if w.category.__name__ == "ToleranceNote":
+        return "tolerance"
     parts = str(w.filename).replace("\\", "/").split("/")
     known = [p for p in ("scipy", "numpy", "matplotlib", "sympy") if p in parts]
     return f"{known[0]} {w.category.__name__}" if known else w.category.__name__

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import tempfile
 import uuid
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -43,6 +45,7 @@ def simulate(derivation: Derivation, spec: SimulationSpec,
         SimulationError: a value is missing or wrong, or the integration failed.
     """
     solve_ivp = require("scipy.integrate").solve_ivp
+    spec = _within_floor(spec)
     module = load_generated(derivation) if module is None else module  # gacli sweep imports it once
     problem = _Problem.make(derivation, module, spec)
     solution = _integrate(solve_ivp, problem, spec, progress)
@@ -100,6 +103,22 @@ def load_generated(derivation: Derivation) -> ModuleType:
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
     return module
+
+
+# SciPy's solvers take no rtol below 100 machine epsilons: they raise it, and the run says the one used.
+RTOL_FLOOR = 100 * float(np.finfo(float).eps)
+
+
+class ToleranceNote(UserWarning):
+    """A tolerance raised to what the integrator can use (a note on the command line)."""
+
+
+def _within_floor(spec: SimulationSpec) -> SimulationSpec:
+    if spec.rtol >= RTOL_FLOOR:
+        return spec
+    warnings.warn(f"--rtol {short(spec.rtol)} is below what double precision resolves; the integration uses "
+                  f"{short(RTOL_FLOOR)} (100 machine epsilons, SciPy's floor)", ToleranceNote, stacklevel=2)
+    return dataclasses.replace(spec, rtol=RTOL_FLOOR)
 
 
 class _EvaluationFailed(Exception):
