@@ -524,3 +524,14 @@ potential: m*g*z
     assert "starting value" not in invoke(str(write(tmp_path, "s.yaml", stated))).stderr
     other = text.replace("q0*dq0 + q1*dq1 + q2*dq2 + q3*dq3 = 0", "q0*dq0 + q1*dq1 + q2*dq2 + 2*q3*dq3 = 0")
     assert "starting value" not in invoke(str(write(tmp_path, "o.yaml", other))).stderr
+
+
+def test_a_long_path_at_80_columns_widens_the_table_rather_than_cut_its_time(tmp_path, monkeypatch):
+    """A CI log is piped at 80 columns: the path and the time must stay whole (they showed '0.…')."""
+    monkeypatch.setenv("GACLI_WIDTH", "80")
+    deep = tmp_path / "a_folder_with_a_long_name" / "and_another_one_below_it"
+    paths = [str(write(deep, name, GOOD)) for name in ("first_pendulum.yaml", "second_pendulum.yaml")]
+    result = invoke(*paths)
+    assert result.exit_code == 0, result.output
+    rows = [line for line in result.stdout.splitlines() if "pendulum.yaml" in line]
+    assert len(rows) == 2 and all(re.search(r"\d+\.\ds$", row.rstrip()) for row in rows), result.stdout

@@ -97,3 +97,26 @@ def test_a_large_system_simulates_from_generated_code_without_the_closed_forms(m
     assert result.exit_code == 0, result.output
     drift = float(result.output.split("relative ")[1].split(")")[0])
     assert drift < 1e-8
+
+
+def _system(tmp_path, text):
+    from gacli.pipeline import STEPS, run
+
+    path = tmp_path / "s.yaml"
+    path.write_text(text, encoding="utf-8")
+    return run(path, needs=STEPS).derivation
+
+
+def test_a_constant_force_at_a_point_that_moves_with_t_is_no_conservative_load(tmp_path):
+    """−F·r depends on t when r does: E then drifts, and was reported as conserved (a reviewer's file)."""
+    d = _system(tmp_path, "gacli: 1\nname: s\nparameters: {m: {value: 1}, k: {value: 4}, F: {value: 3}}\n"
+                          "coordinates: [x]\nbodies: {p: {mass: m, position: [x, 0, 0]}}\npotential: k*x**2/2\n"
+                          "loads:\n  - {force: [F, 0, 0], at: [x + sin(t), 0, 0]}\n")
+    assert conservation_problems(d) == ["a force at a point that moves with t"]
+
+
+def test_a_constraint_nonlinear_in_the_rates_is_said_so_not_said_to_depend_on_t(tmp_path):
+    d = _system(tmp_path, "gacli: 1\nname: s\nparameters: {m: {value: 1}, g: {value: 9.81}, c: {value: 0.5}}\n"
+                          "coordinates: [x, y, z]\nconstraints:\n  - dot(z) = -c*(dot(x)**2 + dot(y)**2)\n"
+                          "bodies:\n  p: {mass: m, position: [x, y, z]}\npotential: m*g*z\n")
+    assert conservation_problems(d) == ["a constraint nonlinear in the rates and not homogeneous of degree one in them"]

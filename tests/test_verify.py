@@ -469,3 +469,12 @@ def test_a_ball_in_a_quaternion_frame_with_an_offset_centre_is_verified_on_its_s
     system = gacli.load(str(Path(__file__).parent / "cases" / "ball_quaternion_offset.yaml"))
     report = V.verify(system, gacli.derive(system), samples=5)
     assert report.passed, "\n".join(V.format_report(report))
+
+
+def test_an_undefined_value_in_the_equations_fails_verify_without_a_traceback(tmp_path):
+    """1/0 written in a position (sin² + cos² − 1 is zero): mpmath's compile met ComplexInfinity and raised."""
+    d = gacli.derive(loads("gacli: 1\nname: z\nparameters: {m: {value: 1}}\ncoordinates: [x, th]\n"
+                           "bodies:\n  a: {mass: m, position: [x, th/(sin(x)**2 + cos(x)**2 - 1), 0]}\n"))
+    report = check(d, samples=2)
+    assert not report.passed
+    assert any("could not be evaluated" in f for f in report.failures)

@@ -24,8 +24,9 @@ def _width() -> int | None:
     return int(value) if value and value.isdigit() else None
 
 
-def stdout() -> Console:
-    return Console(highlight=False, width=_width(), soft_wrap=True)
+def stdout(width: int | None = None) -> Console:
+    """Standard output; ``width`` past the pinned or detected one for what must not be cut."""
+    return Console(highlight=False, width=width or _width(), soft_wrap=True)
 
 
 def stderr() -> Console:

@@ -43,6 +43,8 @@ class Complex(Backend):
     def instruction(self, node, args, nodes) -> tuple:
         if node.is_Symbol:
             return ("symbol", node, args)
+        if node is sp.S.ComplexInfinity:  # a file's 1/0: undefined, as NaN is, never a compile error
+            return ("number", complex("nan"), args)
         if node.is_Number or node.is_NumberSymbol:
             return ("number", complex(node), args)
         if node.is_Add:
@@ -111,7 +113,7 @@ class Mpmath(Backend):
         if isinstance(node, sp.Pow):
             exponent = nodes[args[1]][0]
             return ("ipow", int(exponent), args) if exponent.is_Integer else ("pow", None, args)
-        if node.is_Number or node.is_NumberSymbol:
+        if node.is_Number or node.is_NumberSymbol or node is sp.S.ComplexInfinity:  # mp_number: nan
             return ("number", node, args)
         function = mpmath_function(node.func)
         if function is not None:

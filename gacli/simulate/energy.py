@@ -38,8 +38,13 @@ def conservation_problems(derivation: Derivation) -> list[str]:
         out.append("forces that are not constant")
     if S.T in _free(system.potential):
         out.append("a potential that depends on t")
-    if any(c.form.dt != 0 or S.T in _free(*(e for _, e in c.form.coefficients)) for c in system.constraints):
+    if any(S.T in _free(*force.point) for force in system.forces):  # −F·r then depends on t
+        out.append("a force at a point that moves with t")
+    linear = [c for c in system.constraints if c.rates is None]
+    if any(c.form.dt != 0 or S.T in _free(*(e for _, e in c.form.coefficients)) for c in linear):
         out.append("constraints that depend on t")
+    if any(c.form.dt != 0 for c in system.constraints if c.rates is not None):  # a₀ = g − A ṙ ≠ 0
+        out.append("a constraint nonlinear in the rates and not homogeneous of degree one in them")
     if moving_support(system):
         out.append(MOVING_SUPPORT)
     return out
@@ -55,7 +60,7 @@ def moving_support(system) -> bool:
 
     Read from the file's declarations, not from the chapter's motions, so that a derivation by the
     program alone (a bicycle's simulate) says the same: for every system of the repository both agree."""
-    forms = [c.form for c in system.constraints]
+    forms = [c.form for c in system.constraints if c.rates is None]  # nonlinear ones: said of their own
     forms += [q.differential for q in system.quasi_coordinates if q.differential is not None]
     for body in system.bodies:
         if S.T in _free(*body.position):
