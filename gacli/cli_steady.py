@@ -102,8 +102,13 @@ def sweep_lines(derivation, text: str, pairs, overrides, names) -> list[str]:
              + (f" ({result.zero_roots} at zero along the family, not counted)" if result.zero_roots else ""),
              f"{name:>14}  stable  eigenvalues"]
     for v, ok, row in zip(result.values, result.stable, result.eigenvalues):
-        lines.append(f"{v:>14.8g}  {'yes' if ok else 'no':>6}  " + "  ".join(_complex(e) for e in row))
+        shown = "not defined here" if ok is None else "  ".join(_complex(e) for e in row)
+        lines.append(f"{v:>14.8g}  {'-' if ok is None else 'yes' if ok else 'no':>6}  {shown}")
     lines.append("")
+    if result.undefined:
+        n = result.stable.count(None)
+        lines.append(f"note: {n} of the {len(result.values)} values {'is' if n == 1 else 'are'} not defined "
+                     f"(the first: {result.undefined})")
     if not result.steady:
         lines.append("note: the point is not a steady motion at both ends (the rates of the kept coordinates or "
                      "the accelerations are not zero there); complete it with --at")

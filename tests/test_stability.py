@@ -151,3 +151,18 @@ def test_a_swept_parameter_without_a_value_needs_no_set(tmp_path):
                    "bodies: {b: {mass: m, position: [x, 0, 0]}}\npotential: k*x**2/2\n")
     result = sweep(derive(system), "k", -1.0, 1.0, points=5)
     assert result.stable[-1] and not result.stable[0]  # m x'' = -k x: a spring for k > 0 only
+
+
+def test_a_sweep_goes_on_past_a_value_where_the_equations_are_singular():
+    """Euler angles are singular with the top upright (theta = 0): that row is undefined, the others
+    are linearized; the sweep stopped there with an error before."""
+    from gacli.steady.sweep import sweep
+
+    result = sweep(derived("spinning_top"), "theta", -0.5, 0.5, at={"dot(q)": 20.0}, points=5)
+    assert result.stable[2] is None and all(v is not None for i, v in enumerate(result.stable) if i != 2)
+    assert np.isnan(result.eigenvalues[2]).all() and np.isfinite(result.eigenvalues[[0, 1, 3, 4]]).all()
+    assert "Singular matrix" in result.undefined
+    cli = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "spinning_top.yaml"), "--sweep", "theta=-0.5:0.5:5",
+                                   "--at", "dot(q)=20"])
+    assert cli.exit_code == 0, cli.output
+    assert re.search(r"^\s+0\s+-\s+not defined here$", cli.output, re.M) and "1 of the 5 values is not defined" in cli.output
