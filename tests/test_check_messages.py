@@ -101,3 +101,14 @@ def test_a_symbol_no_expression_could_write_is_refused_where_it_is_declared(tmp_
     result = CliRunner().invoke(app, ["check", str(path)])
     assert result.exit_code == 1, result.output
     assert f"{path}:3:14: error: parameters: '{name}' {why}: no expression could use it" in result.output
+
+
+def test_a_relation_without_a_coordinate_is_said_to_constrain_nothing(tmp_path: Path):
+    """'1 = 0' was 'not independent of the others (it depends on nothing)'."""
+    path = tmp_path / "one.yaml"
+    path.write_text("gacli: 1\nname: h\nparameters: {m: {value: 1}}\ncoordinates: [x]\nconstraints:\n  - 1 = 0\n"
+                    "bodies:\n  p: {mass: m, position: [x, 0, 0]}\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1
+    assert f"{path}:6:5: error: constraints[0]: this relation constrains no coordinate or rate" in result.stderr
+    assert "depends on nothing" not in result.stderr

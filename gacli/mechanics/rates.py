@@ -221,6 +221,11 @@ def _check_rank(system: System, rows, numeric: np.ndarray) -> None:
         if rank(numeric[kept + [i]]) > len(kept):
             kept.append(i)
             continue
+        if not np.any(numeric[i]):  # 1 = 0, or a relation in the parameters alone: no rate in its row
+            diagnostics.append(Diagnostic(location, "this relation constrains no coordinate or rate: every "
+                                          "coefficient of its differential is zero", where,
+                                          "a relation must depend on the coordinates; 1 = 0 is never true"))
+            continue
         others = ", ".join(rows[j][0] for j in kept) or "nothing"
         message = ("this relation is not independent of the others (the matrix of constraint and "
                    "quasi-coordinate coefficients must have full rank)")
