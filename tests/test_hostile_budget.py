@@ -117,6 +117,16 @@ def test_aliases_are_counted_by_the_text_they_repeat():
     assert caught.value.diagnostics[0].location.line == 2  # the list that repeats the alias
 
 
+def test_a_file_too_large_without_aliases_does_not_blame_aliases():
+    from gacli.errors import SystemFileError
+    from gacli.read.source import MAX_NODES, parse_source
+
+    text = "gacli: 1\nname: big\nlist: [" + ", ".join(["0"] * (MAX_NODES + 1)) + "]\n"
+    with pytest.raises(SystemFileError, match="expands to more than") as caught:
+        parse_source(text.encode(), "big.yaml")
+    assert "aliases" not in str(caught.value)
+
+
 def test_anchors_used_as_intended_still_load():
     from gacli.read.source import parse_source
 
