@@ -29,7 +29,8 @@ def show(report: CheckReport) -> None:
             # Located as a problem of the whole file is (1:1), so that every stderr line parses alike.
             console.note(f"{skipped.path}:1:1: note: skipped, {skipped.reason}")
     out = console.stdout()
-    table, needed = _table(report, out.width)
+    table = _table(report, out.width)
+    needed = sum(c.width for c in table.columns) + 2 * (len(table.columns) - 1)  # as _fit lays them out
     # Laid out to the width, not run on; wider only where the unbreakable columns need it (a CI log's long
     # paths at 80 columns), so that a path or a time is never cut.
     wide = out if needed <= out.width else console.stdout(needed)
@@ -37,7 +38,7 @@ def show(report: CheckReport) -> None:
     out.print(_summary(report))
 
 
-def _table(report: CheckReport, width: int) -> tuple[Table, int]:
+def _table(report: CheckReport, width: int) -> Table:
     # At 80 columns a file name must stay whole (it is what one copies), so
     # the file column never wraps and the others are made of short words that
     # fold between them: verdicts counted, not one line per constraint. k is
@@ -54,11 +55,12 @@ def _table(report: CheckReport, width: int) -> tuple[Table, int]:
             Text(printable(", ".join(file.independent))),
             Text("\n".join(map(printable, _classified(file)))), Text(f"{file.elapsed:.1f}s"),
         )
-    return table, _fit(table, width)
+    _fit(table, width)
+    return table
 
 
-def _fit(table: Table, width: int) -> int:
-    """Narrow the widest wrapping columns first, never below their longest word; the width it takes.
+def _fit(table: Table, width: int) -> None:
+    """Narrow the widest wrapping columns first, never below their longest word.
 
     Rich shares a shortage out in proportion, which cuts words (and headers)
     it could have wrapped; here only whole words move to the next line.
@@ -77,7 +79,6 @@ def _fit(table: Table, width: int) -> int:
         excess -= 1
     for column, w in zip(table.columns, widths):
         column.width = w
-    return sum(widths) + 2 * (len(widths) - 1)
 
 
 def _classified(file: FileReport) -> list[str]:
