@@ -290,3 +290,9 @@ def test_an_rtol_below_scipy_s_floor_is_raised_and_the_run_says_the_one_it_used(
         sim = run("cylinder_in_cylinder", init=["theta=0.1"], t_end=0.05, rtol=1e-20)
     assert sim.rtol == RTOL_FLOOR == pytest.approx(2.220446e-14)
     assert "rtol 2.22045e-14" in summary_lines(sim)[0]
+
+
+def test_a_bad_tolerance_from_a_sweep_is_named_as_a_number():
+    """A sweep hands NumPy floats: the message read 'found np.float64(-1.0)'."""
+    with pytest.raises(GacliError, match=r"--rtol: expected a positive number, found -1\.0$"):
+        run("cylinder_in_cylinder", init=["theta=0.1"], t_end=0.05, rtol=np.float64(-1.0))

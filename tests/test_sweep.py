@@ -226,3 +226,11 @@ def test_a_plan_past_its_bounds_is_refused_before_any_point_is_made(kwargs, said
     # A billion samples, or one axis of a billion values, filled 14 GB before the check (or none) came.
     with pytest.raises(SweepError, match=said.replace("(", r"\(")):
         plan(**kwargs)
+
+
+def test_a_numpy_float_is_written_as_a_number_not_as_its_repr():
+    import numpy as np
+
+    from gacli.sweep.table import _cell
+
+    assert _cell(np.float64(0.5)) == "0.5" and _cell(0.25) == "0.25"

@@ -114,7 +114,7 @@ class ToleranceNote(UserWarning):
 
 
 def _within_floor(spec: SimulationSpec) -> SimulationSpec:
-    if spec.rtol >= RTOL_FLOOR:
+    if not 0 < spec.rtol < RTOL_FLOOR:  # a tolerance that is no positive number is the options' error
         return spec
     warnings.warn(f"--rtol {short(spec.rtol)} is below what double precision resolves; the integration uses "
                   f"{short(RTOL_FLOOR)} (100 machine epsilons, SciPy's floor)", ToleranceNote, stacklevel=2)

@@ -41,7 +41,7 @@ class OptionValues:
                                  f"(one of: {', '.join(METHODS)})")
         for option, value in (("--t-end", spec.t_end), ("--rtol", spec.rtol), ("--atol", spec.atol)):
             if not (math.isfinite(value) and value > 0):
-                self._refuse(f"{option}: expected a positive number, found {value!r}")
+                self._refuse(f"{option}: expected a positive number, found {float(value)!r}")  # not np.float64(...)
         if spec.points < 2:
             self._refuse(f"--points: expected at least 2, found {spec.points}")
         elif spec.points * len(self.state) > MAX_VALUES:

@@ -58,7 +58,7 @@ def _cell(value) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
-        return repr(value)
+        return repr(float(value))  # NumPy 2's float64 is a float whose repr is 'np.float64(...)'
     return str(value)
 
 
