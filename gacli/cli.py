@@ -346,8 +346,8 @@ def linearize(
         names = state_names(states or "", "--states")
         sweep_usage(sweep, symbolic)
         with _budget(file, timeout) as state, notes_from_warnings():
-            from gacli.pipeline import CODE
-            derivation = _derive(file, state, needs=None if symbolic else CODE)
+            from gacli.pipeline import CODE, PRINTOUT
+            derivation = _derive(file, state, needs=PRINTOUT if symbolic else CODE, solves=True)
             state("linearizing")
             if symbolic:
                 lines = symbolic_lines(derivation, pairs, overrides, names)

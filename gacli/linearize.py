@@ -264,7 +264,7 @@ def linearize_symbolic(derivation: Derivation, at: Mapping[str, sp.Expr] | None 
     from gacli.emit.naming import layout
     from gacli.algebra.readable import displayable
 
-    if not displayable(derivation):
+    if not derivation.printable or not displayable(derivation):  # a program alone: no expressions to differentiate
         raise LinearizeError("--symbolic: the equations of this system are too large for a symbolic "
                              "linearization (millions of terms as trees); leave out --symbolic for A and B "
                              "as numbers, exact to rounding")

@@ -55,7 +55,7 @@ PROGRAM_ALONE = 800
 
 
 # What a command reads of the derivation, which decides how much of it is formed.
-CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, --reactions, linearize --symbolic, ...)
+CLOSED = "closed"  # the chapter's closed forms: β, the motions, Q, G (verify, --reactions, the API)
 CODE = "code"  # q̇, M and F as generated code computes them
 MATRICES = "matrices"  # the same, of the System with its rolling rows (check, which classifies every row)
 PRINTOUT = "printout"  # q̇, M, F and Q as derive, gibbs and LaTeX print them, read off the program

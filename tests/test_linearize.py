@@ -69,3 +69,23 @@ def test_a_sweep_past_what_numbers_hold_is_a_usage_error(sweep, said):
     result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "cylinder_in_cylinder.yaml"), "--sweep", sweep])
     assert result.exit_code == 2, result.output
     assert said in result.output and "Traceback" not in result.output
+
+
+def test_symbolic_linearization_differentiates_the_forms_read_off_the_program(monkeypatch):
+    """--symbolic needs no closed route: the forms read off the program are what it differentiates,
+    and A agrees with the chapter's rolling-disk result (the doc's example: 4g/(5r), 6w/5, −2w)."""
+    from typer.testing import CliRunner
+
+    import gacli.pipeline as pipeline
+    from gacli.cli import app
+
+    def refused(*args, **kwargs):
+        raise AssertionError("the closed route ran")
+
+    monkeypatch.setattr(pipeline, "derive", refused)
+    result = CliRunner().invoke(app, ["linearize", str(SYSTEMS / "rolling_disk.yaml"), "--symbolic", "--at",
+                                      "dot(spin)=w", "--states", "lean,dot(yaw),dot(lean),dot(spin)"])
+    assert result.exit_code == 0, result.output
+    rows = {line.split()[0]: line.split()[1:] for line in result.output.splitlines()[2:6]}
+    assert rows["dot(yaw)"] == ["0", "0", "-2*w", "0"]
+    assert rows["dot(lean)"] == ["4*g/(5*r)", "6*w/5", "0", "0"]
