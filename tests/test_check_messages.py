@@ -112,3 +112,30 @@ def test_a_relation_without_a_coordinate_is_said_to_constrain_nothing(tmp_path: 
     assert result.exit_code == 1
     assert f"{path}:6:5: error: constraints[0]: this relation constrains no coordinate or rate" in result.stderr
     assert "depends on nothing" not in result.stderr
+
+
+def _checked(tmp_path: Path, text: str):
+    path = tmp_path / "f.yaml"
+    path.write_text(text, encoding="utf-8")
+    return path, CliRunner().invoke(app, ["check", str(path)])
+
+
+def test_an_inertia_no_body_can_have_is_a_warning_at_the_body(tmp_path: Path):
+    """Principal moments 1, 1, 3 break A + B ≥ C: verify's samples said so, check did not."""
+    path, result = _checked(tmp_path, "gacli: 1\nname: b\nparameters: {m: {value: 1}}\ncoordinates: [th]\n"
+                                      "frames: {body: {rotations: [[z, th]]}}\n"
+                                      "bodies:\n  b: {mass: m, position: [0, 0, 0], frame: body, inertia: [1, 1, 3]}\n")
+    assert f"{path}:7:3: warning: bodies.b: no real body has these values: the inertia of b breaks the " \
+           "triangle inequality (principal moments 1, 1, 3)" in result.stderr
+
+
+def test_m_is_sampled_where_the_positions_are_real(tmp_path: Path):
+    """A pendulum of length 0.25 placed by sqrt(L**2 - x**2): no sample of [0.3, 1.7] is real, and check
+    passed without testing M, whose rotor moment is negative."""
+    _, result = _checked(tmp_path, "gacli: 1\nname: p\nparameters: {m: {value: 0.5}, L: {value: 0.25}, "
+                                   "Jr: {value: -0.002}}\ncoordinates: [x, th]\n"
+                                   "frames: {rotor: {rotations: [[z, th]]}}\nbodies:\n"
+                                   "  bob: {mass: m, position: [x, -sqrt(L**2 - x**2), 0], frame: rotor, "
+                                   "inertia: [0.001, 0.001, Jr]}\n")
+    assert result.exit_code == 1
+    assert "error: mass_matrix: M is not positive definite at the sample state" in result.stderr

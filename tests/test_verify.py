@@ -478,3 +478,13 @@ def test_an_undefined_value_in_the_equations_fails_verify_without_a_traceback(tm
     report = check(d, samples=2)
     assert not report.passed
     assert any("could not be evaluated" in f for f in report.failures)
+
+
+def test_an_acceleration_zero_on_both_routes_passes():
+    """s = a x + b x², nothing acting: ẍ is 0 by M u̇ = F and 1.6e-40 by the multipliers' solve, which the
+    relative floor (1e-12 of the group's largest entry) made a difference of 1."""
+    d = gacli.derive(loads("gacli: 1\nname: s\nparameters: {m: {value: 1}, a: {value: 2}, b: {value: 3}}\n"
+                           "coordinates: [x, s]\nconstraints: [s = a*x + b*x**2]\n"
+                           "bodies: {p: {mass: m, position: [x, 0, 0]}}\n"))
+    report = check(d, samples=3)
+    assert report.passed, "\n".join(V.format_report(report))

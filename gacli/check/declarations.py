@@ -36,7 +36,26 @@ def unused_declarations(system: System) -> list[Diagnostic]:
     for c in system.coordinates:
         if c.name not in bodies:
             out.append(_unmoving(system, c))
-    return out + _quaternions_without_rates(system) + _norms_by_their_differential(system) + _not_finite(system)
+    return (out + _quaternions_without_rates(system) + _norms_by_their_differential(system) + _not_finite(system)
+            + _unphysical_bodies(system))
+
+
+def _unphysical_bodies(system: System) -> list[Diagnostic]:
+    """Warnings: a body the file's values make impossible, a mass not positive or an inertia whose
+    principal moments break the triangle inequality (as verify's samples judge them; the same values
+    are an error where the file gives the inertia about another point or in another frame)."""
+    from types import SimpleNamespace
+
+    from gacli.numeric import parameter_values
+    from gacli.numeric.parameters import unphysical
+
+    values, _ = parameter_values(system)
+    out = []
+    for body in system.bodies:
+        problem = unphysical(SimpleNamespace(bodies=(body,)), values)
+        if problem and not problem.endswith(" is 0"):  # a massless body is an idealisation, not a mistake
+            out.append(_warning(body.location, f"bodies.{body.name}", f"no real body has these values: {problem}"))
+    return out
 
 
 def _not_finite(system: System) -> list[Diagnostic]:

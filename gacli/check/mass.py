@@ -14,6 +14,7 @@ from gacli.algebra.graph import free_symbols, postorder
 from gacli.mechanics.program.record import inline
 from gacli.model import System
 from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
+from gacli.numeric.samples import SAMPLE_INTERVAL
 from gacli.numeric.spheres import on_spheres
 from gacli.numeric.zero import decide_zero
 
@@ -102,7 +103,9 @@ def _positive_definite(system: System, M, values, symmetric, findings,
     # Symbols only in positions get values too, from their own stream: M's samples stay as they were.
     placed = free_symbols([c for body in system.bodies for c in body.position]) - set(values) - set(others)
     evaluated = 0
-    for point, more in zip(sample_points(others, PD_SAMPLES), sample_points(placed, PD_SAMPLES, seed=11)):
+    for i, (point, more) in enumerate(_samples(others, placed)):
+        if i >= PD_SAMPLES and evaluated:
+            break
         # Euler parameters on their unit sphere, where the file keeps them: generated code's M is
         # positive definite there, not necessarily off it (a chain of quaternion links).
         state = on_spheres({**values, **more, **point}, system)
@@ -122,8 +125,25 @@ def _positive_definite(system: System, M, values, symmetric, findings,
                            location=where)
             return MassMatrixCheck(symmetric, False, evaluated)
     if evaluated == 0:
-        return MassMatrixCheck(symmetric, None, 0, "not checked: M has no real value at the sample states")
+        note = "not checked: M has no real value at the sample states"
+        findings.diagnostics.append(Diagnostic(where, f"M's definiteness was {note} (a position is not real "
+                                               "at any of them)", "mass_matrix", severity="note"))
+        return MassMatrixCheck(symmetric, None, 0, note)
     return MassMatrixCheck(symmetric, True, evaluated)
+
+
+# Where no sample of [0.3, 1.7] gives every position a real value (a pendulum of length 0.25 placed by
+# sqrt(L**2 - x**2)), the same count of samples ten times smaller.
+SMALL_INTERVAL = (0.03, 0.17)
+
+
+def _samples(others, placed) -> list[tuple[dict, dict]]:
+    """Sample states for M (``others``) and for the symbols only in positions (``placed``)."""
+    out = []
+    for interval in (SAMPLE_INTERVAL, SMALL_INTERVAL):
+        out += zip(sample_points(others, PD_SAMPLES, interval=interval),
+                   sample_points(placed, PD_SAMPLES, seed=11, interval=interval))
+    return out
 
 
 def _require_real_positions(system: System, state) -> None:
