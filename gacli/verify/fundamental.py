@@ -230,12 +230,16 @@ def redundant_relations(fundamental: FundamentalEquations, seed: int = DEFAULT_S
         numeric = [[values[i, j] for j in range(A.cols)] for i in range(A.rows)]
         kept: list[list] = []
         redundant = []
-        for i, row in enumerate(numeric):
+        # A quasi-coordinate's definition first: a rolling row that repeats them (a ball's along the
+        # normal in a quaternion frame) is the one said to repeat, as derive and check say it.
+        count = fundamental.constraint_count
+        for i in [*range(count, len(numeric)), *range(count)]:
+            row = numeric[i]
             if _rank(kept + [row]) > len(kept):
                 kept.append(row)
             else:
                 redundant.append(i)
-    return tuple(redundant)
+    return tuple(sorted(redundant))
 
 
 def _rank(rows: list[list]) -> int:
