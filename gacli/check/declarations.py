@@ -128,18 +128,17 @@ def _unmoving(system: System, coordinate) -> Diagnostic:
                and name in _tied(c, system)]
     if not holding:
         return _warning(coordinate.location, where, _moves_nothing(system, name))
-    return Diagnostic(coordinate.location, f"no body depends on coordinate '{name}'; {', '.join(holding)} "
-                      f"{'holds' if len(holding) == 1 else 'hold'} it, and its equation is its rate alone", where,
-                      severity="note")
+    return Diagnostic(coordinate.location, f"no body depends on coordinate '{name}', but {', '.join(holding)} "
+                      f"{'ties' if len(holding) == 1 else 'tie'} it to two or more others, which it helps to "
+                      "fix (as a slider's travel closes a loop)", where, severity="note")
 
 
 def _tied(constraint, system: System) -> set[str]:
-    """The names of rates and coordinates a constraint ties together."""
-    names = set(constraint.form.names)
-    if constraint.relation is not None:
-        values = {S.value(c.name): c.name for c in system.coordinates}
-        names |= {values[x] for x in free_symbols([constraint.relation]) if x in values}
-    return names
+    """The names of rates a constraint ties together: those whose coefficient in its differential does
+    not vanish (sin(s)**2 + cos(s)**2 in a relation ties s to nothing)."""
+    from gacli.numeric.zero import decide_zero
+
+    return {n for n, c in constraint.form.coefficients if decide_zero(c).zero is not True}
 
 
 def _moves_nothing(system: System, name: str) -> str:
