@@ -368,7 +368,7 @@ def verify(
     """Check a derivation by an independent route.
 
     Eq. (14.10) over all the rates, with multipliers, compared with the
-    derivation at random admissible states.
+    derivation and with what generated code computes, at random admissible states.
     """
     from gacli.display import console
 
