@@ -195,3 +195,18 @@ def test_a_quaternion_frame_on_a_turning_arm(inertia):
     text = text.replace("inertia: [A, A, C]", f"inertia: {inertia}")
     text = text.replace("bodies:\n", "bodies:\n  arm: {mass: m, position: {arm: [0.1, 0, 0]}, frame: arm, inertia: [A, C, A]}\n")
     _agrees_at_random_times(loads(text))
+
+
+_FREE_POSITIONS = {
+    "rod_turned_by_f": "[x*cos(f), x*sin(f)]",  # a bead on a rod the function turns: m ẍ − m ḟ² x = 0
+    "support_moved_by_f": "[x + f, 0]",
+    "scaled_by_f": "[f*x, x**2]",
+}
+
+
+@pytest.mark.parametrize("position", _FREE_POSITIONS.values(), ids=_FREE_POSITIONS)
+def test_a_position_written_with_a_free_function_moves_with_it(position):
+    """A reviewer's bead on a rod turned by f(t), written in format 1: the program read f as a constant
+    (m ẍ = 0) where the chapter's route has m ẍ − m ḟ² x = 0; code, printout and check agreed with it."""
+    _agrees_at_random_times(loads(f"gacli: 1\nname: rod\nparameters: [m]\nfunctions: [f]\ncoordinates: [x]\n"
+                                  f"bodies:\n  bead: {{mass: m, position: {position}}}\n"))

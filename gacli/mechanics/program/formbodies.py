@@ -65,11 +65,17 @@ class FormMotion:
         J = jacobian_rows(list(position), symbols)  # 3 × n: ∂p/∂q
         columns = {q: tape.vec(J[i][j] for i in range(3)) for j, q in enumerate(self.coordinates)}
         V = [self._along(columns, p) for p in self.passes.partial]
-        # d/dt of the closed forms ∂p/∂q, not of their names on the tape: q̈ itself is in V and γ.
+        # d/dt of the closed forms ∂p/∂q, not of their names on the tape: q̈ itself is in V and γ; and of
+        # the rest of the velocity, ∂p/∂t and ∂p/∂f ḟ of each free function f (a rod turned by f(t)).
         change = [sp.Add(*(self.D(J[i][j]) * actual.rate(q) for j, q in enumerate(self.coordinates)
-                           if J[i][j] != 0), self.D(sp.diff(x, S.T))) for i, x in enumerate(position)]
+                           if J[i][j] != 0), self.D(self._moved(x))) for i, x in enumerate(position)]
         rest = add(self._along(columns, self.passes.gamma), tuple(change))
         return V, tape.vec(rest)
+
+    def _moved(self, x: sp.Expr) -> sp.Expr:
+        """The rate of ``x`` with the coordinates held: through t and the free functions of time."""
+        chain = S.time_chain(f.name for f in self.system.free_functions)
+        return sp.Add(*(sp.diff(x, s) * rate for s, rate in chain.items() if x.has(s)))
 
     def _along(self, columns: dict, p: Pass) -> tuple:
         return self.tape.vec(add(*(scale(p.rate(q), columns[q]) for q in self.coordinates if p.rate(q) != 0)))
