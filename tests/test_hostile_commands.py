@@ -154,3 +154,19 @@ def test_the_api_s_solving_calls_raise_the_same_located_error(tmp_path, call):
     with pytest.raises(SystemFileError) as raised:
         getattr(gacli, call)(str(path))
     assert "M is singular at every state: its row for dot(y) is zero" in str(raised.value)
+
+
+@pytest.mark.parametrize("args", [["derive"], ["derive", "--format", "python"], ["check"], ["verify"],
+                                  ["linearize"], ["steady"], ["integrals"]], ids=" ".join)
+@pytest.mark.parametrize("function", ["abs", "sign"])
+def test_abs_or_sign_of_a_coordinate_in_a_position_is_one_located_error(tmp_path, args, function):
+    """Its second derivative is a DiracDelta: tracebacks in linearize, steady, integrals and verify,
+    an unlocated error in the code formats, DiracDelta(x) printed in text (a reviewer's file)."""
+    path = tmp_path / "kink.yaml"
+    path.write_text("gacli: 1\nname: kink\nparameters: {m: {value: 1}}\ncoordinates: [x, y]\n"
+                    f"bodies:\n  b: {{mass: m, position: [x, \"y + {function}(x)\"]}}\n", encoding="utf-8")
+    result = CliRunner().invoke(app, [*args, str(path)])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:6:26: error: bodies.b.position: {function}() of a coordinate in a position has no " \
+           "acceleration" in result.output
+    assert "Traceback" not in result.output and "DiracDelta" not in result.output
