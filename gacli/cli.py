@@ -164,7 +164,7 @@ def derive(
         else:
             from gacli.output import write_files
 
-            for path in write_files(files, output):
+            for path in write_files(files, output, file):
                 console.note(f"wrote {path}")
 
 
@@ -308,7 +308,7 @@ def simulate(
                 result = sim.simulate(derivation, spec, progress=advance)
         from gacli.simulate.plot import state_units
 
-        write_outputs(result, spec, csv, plot, state_units(derivation.system))
+        write_outputs(result, spec, csv, plot, state_units(derivation.system), source=file)
         simulate_console.summary(result)
 
 

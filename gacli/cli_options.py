@@ -81,14 +81,15 @@ def check_outputs(csv, plot, source=None) -> None:
             refuse_input(csv, source)
 
 
-def write_outputs(result, spec, csv, plot, units=None) -> None:
-    """The CSV (by --output's rule: CSV/ is a directory that receives NAME.csv) and the plot."""
+def write_outputs(result, spec, csv, plot, units=None, source=None) -> None:
+    """The CSV (by --output's rule: CSV/ is a directory that receives NAME.csv) and the plot; neither
+    may be ``source``, the system file."""
     from gacli.simulate import console, to_csv
 
     if csv is not None:
         from gacli.output import write_files
 
-        for path in write_files({f"{result.system}.csv": to_csv(result)}, csv):
+        for path in write_files({f"{result.system}.csv": to_csv(result)}, csv, source):
             console.wrote(path)
     if plot is not None:
         from gacli.simulate.plot import plot as draw

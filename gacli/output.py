@@ -74,14 +74,18 @@ def targets(files: dict[str, Text], output: str | Path) -> dict[Path, Text]:
                       f"(a trailing / makes one: {output}/) or the name of one of them")
 
 
-def write_files(files: dict[str, Text], output: str | Path) -> list[Path]:
-    """Write every file, all or none; returns the paths written.
+def write_files(files: dict[str, Text], output: str | Path, source: str | Path | None = None) -> list[Path]:
+    """Write every file, all or none; returns the paths written. ``source``: the system file the
+    command read, which no file written may be (a folder of ``pend.c`` written by ``-f c -o ./``).
 
     Raises:
-        OutputError: the output is not a regular file or directory, or the file system failed.
+        OutputError: the output is not a regular file or directory, is the system file, or the file
+        system failed.
     """
     planned = targets(files, output)
     for path in planned:
+        if source is not None:
+            refuse_input(path, source)
         _require_writable_kind(path)
     directories = sorted({path.parent for path in planned}, key=lambda p: p.parts)
     for directory in directories:

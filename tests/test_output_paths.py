@@ -277,3 +277,14 @@ def test_the_table_and_the_plot_to_one_file_is_a_usage_error(tmp_path):
                                       "R=0,S=0", "--t-end", "0.1", "--csv", str(target), "--plot", str(target)])
     assert result.exit_code == 2, result.output
     assert "is also --csv" in result.output and not target.exists()
+
+
+def test_a_folder_output_never_writes_over_the_system_file_it_read(tmp_path):
+    """The input named pend.c, '-f c -o folder/' (NAME.c and NAME.h) replaced it with generated C, exit 0."""
+    source = (Path(__file__).resolve().parent.parent / "systems" / "cylinder_in_cylinder.yaml").read_text()
+    path = tmp_path / "cylinder_in_cylinder.c"
+    path.write_text(source, encoding="utf-8")
+    result = CliRunner().invoke(app, ["derive", str(path), "--format", "c", "--output", f"{tmp_path}/"])
+    assert result.exit_code == 1, result.output
+    assert "is the system file this command reads" in result.output
+    assert path.read_text() == source and not (tmp_path / "cylinder_in_cylinder.h").exists()
