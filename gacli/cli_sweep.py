@@ -134,7 +134,10 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
         # Generated code runs every point; simulate's integrals read the closed forms where they are small.
         derivation = _SHARED["derive"](file, state, STEPS if mode == "simulate" else CODE, solves=True)
         state(f"setting up the sweep ({mode})")
-        task = S.task_for(derivation, mode, plan, set_=options["set_"], at=options["at"], states=states, spec=spec)
+        try:
+            task = S.task_for(derivation, mode, plan, set_=options["set_"], at=options["at"], states=states, spec=spec)
+        except S.SweepError as exc:  # a name swept that the system does not have: a usage error (exit 2)
+            raise OptionError([str(exc)]) from None
         job = S.Job(f"{time.time_ns()}-{id(task)}", derivation, task)
         # The options' mistakes are found at the first point, within the budget, before any worker starts.
         first = S.run_point(job, plan.points[0])

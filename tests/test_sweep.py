@@ -152,13 +152,13 @@ def test_a_point_that_fails_is_a_row_with_its_reason(tmp_path):
 # -- mistakes --------------------------------------------------------------------------
 
 @pytest.mark.parametrize("args, code, message", [
-    (["--run", "linearize", "--grid", "mass=1:2:2"], 1, "not a parameter or state of the system: mass"),
+    (["--run", "linearize", "--grid", "mass=1:2:2"], 2, "not a parameter or state of the system: mass"),
     (["--run", "simulate", "--grid", "m=1:2:2", "--at", "lean=0"], 2, "only with --run linearize"),
     (["--run", "linearize", "--grid", "m=1:2:2", "--t-end", "3"], 2, "only with --run simulate"),
     (["--run", "linearize", "--grid", "m=1:2:2", "--output", "table.txt"], 1, ".csv or a .parquet"),
     (["--run", "linearize", "--grid", "m=1:2:2", "--jobs", "2", "--scheduler", "tcp://x:1"], 2, "give one"),
     (["--run", "bounce", "--grid", "m=1:2:2"], 2, "choose one of: linearize, simulate"),
-    (["--run", "linearize", "--grid", "m=1:2:2", "--states", "wobble"], 1, "not in the state: wobble"),
+    (["--run", "linearize", "--grid", "m=1:2:2", "--states", "wobble"], 2, "not in the state: wobble"),
     (["--run", "linearize", "--grid", "m=1:2"], 2, "expected NAME=START:STOP:COUNT"),
     (["--run", "linearize", "--random", "m=1:2", "--samples", "2", "--seed", "-1"], 2, "--seed -1"),
 ])
@@ -173,7 +173,7 @@ def test_an_existing_table_is_untouched_when_the_sweep_fails(tmp_path):
     out = tmp_path / "table.csv"
     out.write_text("before\n")
     result = invoke("sweep", DISK, "--run", "linearize", "--grid", "mass=1:2:2", "--output", str(out))
-    assert result.exit_code == 1
+    assert result.exit_code == 2  # the unknown name: a usage error
     assert out.read_text() == "before\n"
 
 
