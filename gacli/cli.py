@@ -137,7 +137,7 @@ def derive(
     """Derive the Gibbs-Appell equations of a system and print them."""
     from gacli.display import console
 
-    derive_usage(format, output, steps, reactions)
+    derive_usage(format, output, steps, reactions, standalone)
     with _boundary():
         if output is not None:  # a device or FIFO, or a name none of the files can have: before the work
             output_usage(format, str(output), file)

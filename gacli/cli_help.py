@@ -100,8 +100,10 @@ def code_formats() -> tuple[str, ...]:
     return tuple(f for f in formats() if f not in ("text", "latex"))
 
 
-def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool) -> None:
+def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool, standalone: bool = False) -> None:
     """Option combinations derive refuses, found before any work is done."""
+    if standalone and format != "latex":
+        raise typer.BadParameter("--standalone goes with --format latex", param_hint="--standalone")
     if format == "fmu" and output is None:
         raise typer.BadParameter("an FMU is a zip file, not text: pass --output NAME.fmu (or an existing directory)",
                                  param_hint="--output")

@@ -68,6 +68,12 @@ def test_unknown_format_is_a_usage_error():
     assert result.exit_code == 2
 
 
+def test_standalone_without_latex_is_a_usage_error_as_steps_and_reactions_are():
+    result = run("derive", SPHERE, "--format", "python", "--standalone")
+    assert result.exit_code == 2
+    assert "--standalone goes with --format latex" in result.output
+
+
 def test_existing_output_untouched_on_error(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("gacli: 1\nname: bad\n")
