@@ -614,3 +614,13 @@ def test_numbers_from_other_languages_are_named(text: str, words: list[str]) -> 
     for word in words:
         assert word in err.message
     assert "attribute access" not in err.message and "expected an operator" not in err.message
+
+
+def test_t_where_time_is_not_allowed_and_dot_t_are_said_so_not_undeclared() -> None:
+    """'mass: 1 + t' said "'t' is not declared"; 'dot(t)' said so and asked "did you mean 't'?"."""
+    from gacli.read.expr.build import BuildError, Scope, build
+
+    with pytest.raises(BuildError, match="'t' is not allowed here: this value may not depend on time"):
+        build(parse("1 + t"), Scope(values={}))
+    with pytest.raises(BuildError, match=r"'dot\(t\)' is not allowed: t is time, not a coordinate"):
+        build(parse("x*dot(t)"), Scope(values={"x": sp.Symbol("x"), "t": sp.Symbol("t")}))

@@ -89,6 +89,8 @@ def _name(node: Name, scope: Scope) -> sp.Expr:
         return sp.pi
     if node.id in scope.refusals:
         raise BuildError(scope.refusals[node.id], node.pos)
+    if node.id == "t":  # always declared; a constant here (a mass, an inertia, a parameter's value)
+        raise BuildError("'t' is not allowed here: this value may not depend on time", node.pos)
     raise BuildError(f"'{node.id}' is not declared", node.pos, _suggest(node.id, scope))
 
 
@@ -97,6 +99,8 @@ def _rate(node: Rate, scope: Scope) -> sp.Expr:
     written = rate_name(node.name, node.order)
     if key in scope.rates:
         return scope.rates[key]
+    if node.name == "t":  # t is no coordinate: its rate is 1
+        raise BuildError(f"'{written}' is not allowed: t is time, not a coordinate (dot(t) would be 1)", node.pos)
     if node.name in scope.refusals or node.name in scope.declared:
         why = scope.refusals.get(node.name, "") or scope.rate_note
         reason = f"; {why}" if why else ""
