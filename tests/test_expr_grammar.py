@@ -618,6 +618,8 @@ def test_numbers_from_other_languages_are_named(text: str, words: list[str]) -> 
 
 def test_t_where_time_is_not_allowed_and_dot_t_are_said_so_not_undeclared() -> None:
     """'mass: 1 + t' said "'t' is not declared"; 'dot(t)' said so and asked "did you mean 't'?"."""
+    import sympy as sp
+
     from gacli.read.expr.build import BuildError, Scope, build
 
     with pytest.raises(BuildError, match="'t' is not allowed here: this value may not depend on time"):
