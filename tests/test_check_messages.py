@@ -150,3 +150,9 @@ def test_m_is_sampled_where_the_positions_are_real(tmp_path: Path):
                                    "inertia: [0.001, 0.001, Jr]}\n")
     assert result.exit_code == 1
     assert "error: mass_matrix: M is not positive definite at the sample state" in result.stderr
+
+
+def test_an_empty_bodies_mapping_is_said_to_be_empty(tmp_path: Path):
+    """It said 'expected a mapping of named bodies, found a mapping'."""
+    path, result = _checked(tmp_path, "gacli: 1\nname: h\nparameters: {m: {value: 1}}\ncoordinates: [x]\nbodies: {}\n")
+    assert f"{path}:5:9: error: bodies: expected a mapping of named bodies, found an empty mapping" in result.stderr

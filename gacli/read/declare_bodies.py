@@ -13,7 +13,8 @@ def read_bodies(reader: Reader, top: dict) -> tuple[BodyDecl, ...]:
         return ()
     node = top["bodies"][1]
     if not isinstance(node, Mapping) or not node.items:
-        reader.error(node, "bodies", f"expected a mapping of named bodies, found {describe(node)}")
+        found = "an empty mapping" if isinstance(node, Mapping) else describe(node)
+        reader.error(node, "bodies", f"expected a mapping of named bodies, found {found}")
         return ()
     out = []
     for key, value in node.items:
