@@ -44,16 +44,14 @@ def _unphysical_bodies(system: System) -> list[Diagnostic]:
     """Warnings: a body the file's values make impossible, a mass not positive or an inertia whose
     principal moments break the triangle inequality (as verify's samples judge them; the same values
     are an error where the file gives the inertia about another point or in another frame)."""
-    from types import SimpleNamespace
-
     from gacli.numeric import parameter_values
-    from gacli.numeric.parameters import unphysical
+    from gacli.numeric.parameters import body_problem
 
     values, _ = parameter_values(system)
     out = []
     for body in system.bodies:
-        problem = unphysical(SimpleNamespace(bodies=(body,)), values)
-        if problem and not problem.endswith(" is 0"):  # a massless body is an idealisation, not a mistake
+        # A massless body is an idealisation, not a mistake.
+        if problem := body_problem(body, values, massless=True):
             out.append(_warning(body.location, f"bodies.{body.name}", f"no real body has these values: {problem}"))
     return out
 
@@ -124,8 +122,8 @@ def _unmoving(system: System, coordinate) -> Diagnostic:
     closes the loop, and Euler parameters are held by their unit norm. Tied to one other alone
     (ds = l dθ), it only repeats that one: the warning stands."""
     name, where = coordinate.name, f"coordinates.{coordinate.name}"
-    holding = [f"constraints[{i}]" for i, c in enumerate(system.constraints) if len(_tied(c, system) - {name}) >= 2
-               and name in _tied(c, system)]
+    ties = [(i, _tied(c)) for i, c in enumerate(system.constraints)]
+    holding = [f"constraints[{i}]" for i, tied in ties if name in tied and len(tied - {name}) >= 2]
     if not holding:
         return _warning(coordinate.location, where, _moves_nothing(system, name))
     return Diagnostic(coordinate.location, f"no body depends on coordinate '{name}', but {', '.join(holding)} "
@@ -133,7 +131,7 @@ def _unmoving(system: System, coordinate) -> Diagnostic:
                       "fix (as a slider's travel closes a loop)", where, severity="note")
 
 
-def _tied(constraint, system: System) -> set[str]:
+def _tied(constraint) -> set[str]:
     """The names of rates a constraint ties together: those whose coefficient in its differential does
     not vanish (sin(s)**2 + cos(s)**2 in a relation ties s to nothing)."""
     from gacli.numeric.zero import decide_zero

@@ -118,24 +118,30 @@ def _inertial_parameters(system, drawn: set) -> tuple[list[sp.Symbol], set[sp.Sy
 
 def unphysical(system, values: Mapping[sp.Symbol, float]) -> str:
     """What makes a body unphysical at these parameter values ("" when nothing does, or unknown)."""
-    for body in system.bodies:
-        mass = _float(body.mass, values)
-        if mass is not None and not mass > 0:
-            return f"the mass of {body.name} is {mass:.3g}"
-        if body.inertia is None:
-            continue
-        entries = [_float(body.inertia[i, j], values) for i in range(3) for j in range(3)]
-        if None in entries:
-            continue
-        moments = sorted(float(v) for v in np.linalg.eigvalsh(np.array(entries).reshape(3, 3)))
-        slack = 1e-9 * max(abs(moments[-1]), 1e-300)
-        shown = ", ".join(f"{v:.3g}" for v in moments)
-        if moments[0] < -slack:
-            return f"the inertia of {body.name} is not positive definite (principal moments {shown})"
-        # A plane body gives only the moment about its axis: diag(0, 0, I) is no real body, but no fault.
-        planar = moments[1] <= slack
-        if not planar and moments[2] > moments[0] + moments[1] + slack:
-            return f"the inertia of {body.name} breaks the triangle inequality (principal moments {shown})"
+    return next((problem for body in system.bodies if (problem := body_problem(body, values))), "")
+
+
+def body_problem(body, values: Mapping[sp.Symbol, float], massless: bool = False) -> str:
+    """What makes one body unphysical at these values: a mass not positive (0 allowed, and then
+    nothing else judged, with ``massless``), an inertia not positive or breaking the triangle
+    inequality; "" when nothing does, or unknown."""
+    mass = _float(body.mass, values)
+    if mass is not None and not mass > 0:
+        return "" if massless and mass == 0 else f"the mass of {body.name} is {mass:.3g}"
+    if body.inertia is None:
+        return ""
+    entries = [_float(body.inertia[i, j], values) for i in range(3) for j in range(3)]
+    if None in entries:
+        return ""
+    moments = sorted(float(v) for v in np.linalg.eigvalsh(np.array(entries).reshape(3, 3)))
+    slack = 1e-9 * max(abs(moments[-1]), 1e-300)
+    shown = ", ".join(f"{v:.3g}" for v in moments)
+    if moments[0] < -slack:
+        return f"the inertia of {body.name} is not positive definite (principal moments {shown})"
+    # A plane body gives only the moment about its axis: diag(0, 0, I) is no real body, but no fault.
+    planar = moments[1] <= slack
+    if not planar and moments[2] > moments[0] + moments[1] + slack:
+        return f"the inertia of {body.name} breaks the triangle inequality (principal moments {shown})"
     return ""
 
 

@@ -40,8 +40,7 @@ def conservation_problems(derivation: Derivation) -> list[str]:
         out.append("a potential that depends on t")
     if any(S.T in _free(*force.point) for force in system.forces):  # −F·r then depends on t
         out.append("a force at a point that moves with t")
-    linear = [c for c in system.constraints if c.rates is None]
-    if any(c.form.dt != 0 or S.T in _free(*(e for _, e in c.form.coefficients)) for c in linear):
+    if any(_timed(c.form) for c in system.constraints if c.rates is None):
         out.append("constraints that depend on t")
     if any(c.form.dt != 0 for c in system.constraints if c.rates is not None):  # a₀ = g − A ṙ ≠ 0
         out.append("a constraint nonlinear in the rates and not homogeneous of degree one in them")
@@ -66,7 +65,12 @@ def moving_support(system) -> bool:
         if S.T in _free(*body.position):
             return True
         forms += list(body.rotation or ())
-    return any(f.dt != 0 or S.T in _free(*(c for _, c in f.coefficients)) for f in forms)
+    return any(_timed(f) for f in forms)
+
+
+def _timed(form) -> bool:
+    """A form with a dt term or t in a coefficient."""
+    return form.dt != 0 or S.T in _free(*(c for _, c in form.coefficients))
 
 
 def _free(*exprs) -> set[sp.Symbol]:

@@ -276,8 +276,7 @@ class _Problem:
         if rates is None:  # a dependent quasi-coordinate without a differential: its rate is β u + β₀
             rates = tuple((q.name, (self.derivation.rates or solve_rates(system)).rate(q.name))
                           for q in system.quasi_coordinates)
-        replace = {S.rate(c.name): d for c, d in zip(system.coordinates, fd)}
-        replace.update({S.rate(q): e for q, e in rates if q not in coordinate_rates})
+        replace = {S.rate(n): e for n, e in [*coordinate_rates.items(), *rates]}
         expr = sum((c * S.rate(n) for n, c in form.coefficients), form.dt)
         return as_expr(expr).xreplace(replace).xreplace(self.functions), fd
 

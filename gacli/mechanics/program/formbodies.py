@@ -44,6 +44,7 @@ class FormMotion:
         self.names = list(system.rate_names)
         self.substitution = substitution  # dependent rate symbols → their program values
         self.D = time_derivative(system, passes.actual, tape)
+        self.time = S.time_chain(f.name for f in system.free_functions)  # t and each free function: their rates
         self._points: dict[tuple, tuple] = {}  # a force at a body's centre asks for the body's motion again
 
     def point(self, position) -> tuple[list[tuple], tuple]:
@@ -74,8 +75,7 @@ class FormMotion:
 
     def _moved(self, x: sp.Expr) -> sp.Expr:
         """The rate of ``x`` with the coordinates held: through t and the free functions of time."""
-        chain = S.time_chain(f.name for f in self.system.free_functions)
-        return sp.Add(*(sp.diff(x, s) * rate for s, rate in chain.items() if x.has(s)))
+        return sp.Add(*(sp.diff(x, s) * rate for s, rate in self.time.items() if x.has(s)))
 
     def _along(self, columns: dict, p: Pass) -> tuple:
         return self.tape.vec(add(*(scale(p.rate(q), columns[q]) for q in self.coordinates if p.rate(q) != 0)))
