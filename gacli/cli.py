@@ -128,7 +128,7 @@ def derive(
         help=f"Output form: {', '.join(FORMATS)}.")] = "text",
     output: Annotated[Optional[str], typer.Option(
         "--output", "-o", metavar="PATH",
-        help="Write here instead of stdout: a file, or a directory when PATH ends in / or is one (text: NAME.txt).")] = None,
+        help="Write here instead of stdout (- is stdout): a file, or a directory when PATH ends in / or is one (text: NAME.txt).")] = None,
     standalone: Annotated[bool, typer.Option(help="LaTeX: a complete document for pdflatex.")] = False,
     steps: Annotated[bool, typer.Option(help="Show the worked solution, step by step (text or LaTeX).")] = False,
     reactions: Annotated[bool, typer.Option(help="Also the constraint forces (multipliers): text, or a reactions() function.")] = False,
@@ -137,7 +137,7 @@ def derive(
     """Derive the Gibbs-Appell equations of a system and print them."""
     from gacli.display import console
 
-    derive_usage(format, output, steps, reactions, standalone)
+    output = derive_usage(format, output, steps, reactions, standalone)
     with _boundary():
         if output is not None:  # a device or FIFO, or a name none of the files can have: before the work
             output_usage(format, str(output), file)

@@ -100,8 +100,11 @@ def code_formats() -> tuple[str, ...]:
     return tuple(f for f in formats() if f not in ("text", "latex"))
 
 
-def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bool, standalone: bool = False) -> None:
-    """Option combinations derive refuses, found before any work is done."""
+def derive_usage(format: str, output: Optional[str], steps: bool, reactions: bool,
+                 standalone: bool = False) -> Optional[str]:
+    """Option combinations derive refuses, found before any work is done; the output to write, None for
+    standard output (``-o -`` says so, as with ``FILE``: no file named ``-`` is written)."""
+    output = None if output == "-" else output
     if standalone and format != "latex":
         raise typer.BadParameter("--standalone goes with --format latex", param_hint="--standalone")
     if format == "fmu" and output is None:
@@ -111,6 +114,7 @@ def derive_usage(format: str, output: Optional[Path], steps: bool, reactions: bo
         raise typer.BadParameter("--reactions goes with --format text, python or c", param_hint="--reactions")
     if steps and format not in ("text", "latex"):
         raise typer.BadParameter("--steps goes with --format text or latex", param_hint="--steps")
+    return output
 
 
 # Formats that write several files, and the endings of their names (gacli.output: a file name given

@@ -68,7 +68,7 @@ _Atol = Annotated[Optional[float], typer.Option(metavar="NUMBER", help="simulate
 _Points = Annotated[Optional[int], typer.Option(
     min=2, metavar="N", help="simulate: samples the energy drift and residuals are measured at (101).")]
 _Output = Annotated[Optional[Path], typer.Option(
-    "--output", "-o", metavar="FILE", help="Write the table here (.csv, or .parquet with pyarrow); else CSV to stdout.")]
+    "--output", "-o", metavar="FILE", help="Write the table here (.csv, or .parquet with pyarrow); else (or with -) CSV to stdout.")]
 _Jobs = Annotated[int, typer.Option("--jobs", "-j", min=1, metavar="N", help="Local processes to run the points on.")]
 _Scheduler = Annotated[Optional[str], typer.Option(
     metavar="ADDRESS", help="Run the points on this Dask scheduler (tcp://host:8786) instead.")]
@@ -120,6 +120,7 @@ def _sweep(file: Path, mode: str, plan_options: dict, options: dict,
 
     from gacli.simulate.spec import OptionError
 
+    output = None if str(output) == "-" else output  # - is standard output, as for FILE
     try:
         plan = S.plan(**plan_options)
     except S.SweepError as exc:  # a malformed --grid, --random, --samples or --seed: a usage error (exit 2)

@@ -288,3 +288,22 @@ def test_a_folder_output_never_writes_over_the_system_file_it_read(tmp_path):
     assert result.exit_code == 1, result.output
     assert "is the system file this command reads" in result.output
     assert path.read_text() == source and not (tmp_path / "cylinder_in_cylinder.h").exists()
+
+
+@pytest.mark.parametrize("args", [["derive", str(SYSTEM), "--output", "-"],
+                                  ["derive", str(SYSTEM), "-f", "python", "-o", "-"],
+                                  ["sweep", str(SYSTEM), "--run", "linearize", "--grid", "g=9:10:2", "-o", "-"]],
+                         ids=["derive-text", "derive-python", "sweep"])
+def test_a_dash_output_is_standard_output_as_a_dash_file_is_standard_input(tmp_path, monkeypatch, args):
+    # '-o -' wrote a file named '-' in the working directory.
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 0, result.output
+    assert not (tmp_path / "-").exists() and list(tmp_path.iterdir()) == []
+    assert ("M" in result.output) if args[0] == "derive" else ("g,max_real" in result.output)
+
+
+def test_an_fmu_to_standard_output_is_refused_before_the_work(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(app, ["derive", str(SYSTEM), "-f", "fmu", "-o", "-"])
+    assert result.exit_code == 2 and "an FMU is a zip file" in result.output and list(tmp_path.iterdir()) == []
