@@ -131,7 +131,7 @@ def _unevaluable(derivation: Derivation, point: Mapping[str, float], exc: Except
     where = ", ".join(f"{n} = {v:g}" if isinstance(v, float) else f"{n} = {v}" for n, v in point.items())
     reason = str(exc) or type(exc).__name__
     message = (f"linearize: the equations cannot be evaluated or differentiated at the operating point "
-               f"{where} ({reason}); choose another with --at")
+               f"{where} ({reason}); choose another operating point (linearize: --at)")
     return SystemFileError([Diagnostic(_failing_place(derivation, point), message)])
 
 
