@@ -97,6 +97,7 @@ def sweep_lines(derivation, text: str, pairs, overrides, names) -> list[str]:
     defaults = parameter_defaults(derivation.system.parameters)
     values = L.evaluate_assignments(overrides, defaults, "--set")
     point = L.evaluate_assignments(pairs, {**defaults, **values}, "--at")
+    _not_also_given(name, point, values)
     result = sweep(derivation, name, start, stop, at=point, parameters=values, states=names or None, points=count)
     lines = [f"eigenvalues of A on {', '.join(result.state)}"
              + (f" ({result.zero_roots} at zero along the family, not counted)" if result.zero_roots else ""),
@@ -116,6 +117,15 @@ def sweep_lines(derivation, text: str, pairs, overrides, names) -> list[str]:
     lines += [f"stable for {name} in [{a:.10g}, {b:.10g}]" for a, b in result.intervals] or \
         [f"stable nowhere in [{start:g}, {stop:g}]"]
     return lines
+
+
+def _not_also_given(name: str, point, values) -> None:
+    """The swept name takes the sweep's values; one given by --at or --set too was silently dropped."""
+    from gacli.simulate.spec import OptionError
+
+    for option, given in (("--at", point), ("--set", values)):
+        if name in given:
+            raise OptionError([f"--sweep {name}: {name} takes the sweep's values; leave it out of {option}"])
 
 
 def _complex(value: complex) -> str:

@@ -66,6 +66,9 @@ def test_the_parser_writes_names_as_gacli_does_and_refuses_them_twice():
     (["--symbolic", "--sweep", "theta=0:1"], "--sweep computes eigenvalues numerically"),
     (["--symbolic", "--at", "lean=0"], "not a state or input: lean"),
     (["--at", "theta"], "expected name=value"),
+    # The swept value given too was dropped without a word.
+    (["--sweep", "theta=0:1", "--at", "theta=0.5"], "theta takes the sweep's values; leave it out of --at"),
+    (["--sweep", "g=1:2", "--set", "g=3"], "g takes the sweep's values; leave it out of --set"),
 ])
 def test_linearize_usage_errors(options, message):
     usage_error(run("linearize", str(CYLINDER), *options), message)
