@@ -28,6 +28,15 @@ def test_candidate_is_read_by_the_grammar_not_eval():
     assert result.exit_code == 2 and "Traceback" not in result.output
 
 
+@pytest.mark.parametrize("candidate, message", [("sqrt(-1)", "is not a real expression"),
+                                                ("log(-1)*theta", "is not a real expression"),
+                                                ("C*g", "holds no coordinate or rate")])
+def test_a_constant_or_complex_candidate_is_a_usage_error(candidate, message):
+    # sqrt(-1) and 3 were 'conserved (proved symbolically)', true of every constant and saying nothing.
+    result = CliRunner().invoke(app, ["integrals", TOP, "--candidate", candidate])
+    assert result.exit_code == 2 and message in result.output and "Traceback" not in result.output
+
+
 def test_json_lists_the_sleighs_broken_momentum():
     result = CliRunner().invoke(app, ["integrals", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "json"])
     assert result.exit_code == 0, result.output
