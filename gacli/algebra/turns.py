@@ -16,6 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.algebra.graph import trees_within
+from gacli.algebra.turn_products import PRODUCTS_NODES, NotTurned, products
 
 # Tree nodes of what is rewritten, and trig factors in one product, at most: the terms of a
 # product of k sums of two double each time.
@@ -23,14 +24,20 @@ TURNED_NODES = 2_000
 TRIG_FACTORS = 8
 
 
-class NotTurned(Exception):
-    """An expression that holds the angles other than in sines and cosines of whole combinations."""
-
-
 def turns(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | None:
     """{m: c_m} with expr = Σ c_m e^(i m·q) (q = ``angles``, in order; c_m free of them), or None."""
+    if trees_within([expr], PRODUCTS_NODES):
+        try:
+            return products(expr, angles)
+        except NotTurned:
+            pass
     if not trees_within([expr], TURNED_NODES):
         return None
+    return _expanded(expr, angles)
+
+
+def _expanded(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | None:
+    """:func:`turns` by SymPy's expand of the exponentials (any offset in the angles)."""
     w = [sp.Symbol(f"_w_{q}") for q in angles]
     try:
         written = sp.expand(_exponentials(sp.S(expr), angles, w))

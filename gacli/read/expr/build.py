@@ -20,7 +20,8 @@ from gacli.read.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
 from gacli.algebra.symbols import rate_name
 
 MAX_EXPONENT = 100
-_ADDITIVE = ("+", "-")
+_ADDITIVE = frozenset({"+", "-"})
+_MULTIPLICATIVE = frozenset({"*", "/"})
 MAX_DIGITS = 300
 
 _FUNCTIONS = {
@@ -136,16 +137,23 @@ def _defined(value: sp.Expr, pos: int) -> sp.Expr:
 def _binop(node: BinOp, scope: Scope) -> sp.Expr:
     if node.op in _ADDITIVE:
         return _sum(node, scope)
+    if node.op in _MULTIPLICATIVE:
+        return _product(node, scope)
     left = build(node.left, scope)
     right = build(node.right, scope)
-    if node.op == "*":
-        return left * right
-    if node.op == "/":
-        if right == 0:
-            raise BuildError("division by zero", node.pos)
-        return _defined(left / right, node.pos)
     _check_power(left, right, node.pos)
     return _defined(left**right, node.pos)
+
+
+def _chain(node: BinOp, ops: frozenset[str]) -> tuple[Node, list[BinOp]]:
+    """The first operand of a chain a ∘ b ∘ c ... of ``ops`` and its links, left to right, by a loop:
+    a chain of 2,000 terms is a tree 2,000 tall (gacli.read.expr.grammar)."""
+    links = []
+    left: Node = node
+    while isinstance(left, BinOp) and left.op in ops:
+        links.append(left)
+        left = left.left
+    return left, links[::-1]
 
 
 def _sum(node: BinOp, scope: Scope) -> sp.Expr:
@@ -156,16 +164,27 @@ def _sum(node: BinOp, scope: Scope) -> sp.Expr:
     each ``a - b`` is ``Add(a, -b)``), so the result is the same expression.
     The terms are built left to right, so the first error is the same too.
     """
-    links = []
-    left: Node = node
-    while isinstance(left, BinOp) and left.op in _ADDITIVE:
-        links.append(left)
-        left = left.left
-    terms = [build(left, scope)]
-    for link in reversed(links):
+    first, links = _chain(node, _ADDITIVE)
+    terms = [build(first, scope)]
+    for link in links:
         right = build(link.right, scope)
         terms.append(right if link.op == "+" else -right)
     return sp.Add(*terms)
+
+
+def _product(node: BinOp, scope: Scope) -> sp.Expr:
+    """A chain a * b / c ... as one Mul of its factors, each divisor refused where it is zero, as
+    :func:`_sum` does for a sum (the same expression, built in one step)."""
+    first, links = _chain(node, _MULTIPLICATIVE)
+    factors = [build(first, scope)]
+    for link in links:
+        right = build(link.right, scope)
+        if link.op == "/":
+            if right == 0:
+                raise BuildError("division by zero", link.pos)
+            right = _defined(1 / right, link.pos)
+        factors.append(right)
+    return _defined(sp.Mul(*factors), node.pos)
 
 
 def _check_power(base: sp.Expr, exponent: sp.Expr, pos: int) -> None:

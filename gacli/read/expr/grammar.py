@@ -38,10 +38,13 @@ before Python's recursion limit:
 
 * at most MAX_DEPTH levels of nesting (parentheses, calls, signs, ``**``),
   which bounds the parser's own recursion;
-* a tree at most MAX_DEPTH nodes tall. A chain ``a+b+...`` is a left-leaning
-  tree one node taller per operator, so a sum of more than about MAX_DEPTH
-  terms is refused; in exchange, anything that recurses over a parsed tree
-  (the nodes' own ``==``, ``hash`` and ``repr``, the SymPy builder) is safe.
+* a tree at most MAX_DEPTH nodes tall, where a chain ``a+b-c+...`` or
+  ``a*b/c*...`` (a left-leaning tree, one BinOp per operator) counts as one
+  level, whatever its length: a sum of 2,000 terms pasted from a CAS is an
+  expression like any other. Everything that goes down a chain does so by a
+  loop (the nodes' own ``==``, ``hash`` and ``repr`` here, :func:`render`,
+  :func:`walk`, the SymPy builder), and recursion is left for the levels,
+  so anything that recurses over a parsed tree is safe.
 """
 
 from __future__ import annotations
@@ -132,9 +135,13 @@ class Neg:
     pos: int = field(default=0, compare=False)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False, repr=False)
 class BinOp:
-    """A binary operation; ``op`` is one of ``+ - * / **``."""
+    """A binary operation; ``op`` is one of ``+ - * / **``.
+
+    ``==``, ``hash`` and ``repr`` are those a dataclass would make, computed by a loop down the
+    left spine: a long sum is a tree as tall as it has terms (see the module).
+    """
 
     op: str
     left: Node
@@ -144,6 +151,31 @@ class BinOp:
     def __post_init__(self) -> None:
         if self.op not in _OPERATORS:
             raise ValueError(f"unknown operator {self.op!r}")
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, BinOp):
+            return NotImplemented
+        mine, theirs = _spine(self), _spine(other)
+        return (len(mine) == len(theirs) and all(a.op == b.op for a, b in zip(mine, theirs))
+                and mine[-1].left == theirs[-1].left and all(a.right == b.right for a, b in zip(mine, theirs)))
+
+    def __hash__(self) -> int:
+        links = _spine(self)
+        return hash((tuple(link.op for link in links), links[-1].left, tuple(link.right for link in links)))
+
+    def __repr__(self) -> str:
+        links = _spine(self)
+        opened = "".join(f"BinOp(op={link.op!r}, left=" for link in links)
+        closed = "".join(f", right={link.right!r}, pos={link.pos!r})" for link in reversed(links))
+        return opened + repr(links[-1].left) + closed
+
+
+def _spine(node: BinOp) -> list[BinOp]:
+    """``node`` and the BinOps down its left children, outermost first."""
+    links = [node]
+    while isinstance(links[-1].left, BinOp):
+        links.append(links[-1].left)
+    return links
 
 
 Node = Num | Name | Rate | Call | Neg | BinOp

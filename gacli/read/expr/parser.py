@@ -86,13 +86,14 @@ class _Parser:
         """Record the height of a new inner node, refusing trees taller than MAX_DEPTH."""
         # Keys by id() are safe: every node made here stays alive in the tree.
         heights = self.heights
-        if isinstance(node, BinOp):
+        if isinstance(node, BinOp) and _links(node):  # one more link of a chain: the chain is one level
+            height = max(heights.get(id(node.left), 0), 1 + heights.get(id(node.right), 0))
+        elif isinstance(node, BinOp):
             height = 1 + max(heights.get(id(node.left), 0), heights.get(id(node.right), 0))
         else:
             height = 1 + max((heights.get(id(child), 0) for child in children(node)), default=0)
         if height > MAX_DEPTH:
-            raise ParseError(f"expression is nested too deeply (more than {MAX_DEPTH} levels; "
-                             "each operator of a long sum or product is a level)", token.pos)
+            raise ParseError(f"expression is nested too deeply (more than {MAX_DEPTH} levels)", token.pos)
         self.heights[id(node)] = height
         return node
 
@@ -220,6 +221,15 @@ class _Parser:
         line = self.text.count("\n", 0, pos) + 1
         column = pos - (self.text.rfind("\n", 0, pos) + 1) + 1
         return f"column {column}" if line == 1 else f"line {line}, column {column}"
+
+
+_CHAINS = ({"+", "-"}, {"*", "/"})
+
+
+def _links(node: BinOp) -> bool:
+    """Whether ``node`` continues a chain of sums or of products: its left operand is one of the same kind."""
+    left = node.left
+    return isinstance(left, BinOp) and any(node.op in chain and left.op in chain for chain in _CHAINS)
 
 
 def _is_function(word: str) -> bool:
