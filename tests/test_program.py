@@ -470,3 +470,43 @@ def test_a_wheel_on_a_z_down_ground_is_taken_with_its_contact_below_it(placed):
     else:
         system = loads(_Z_DOWN_DISC.substitute(position="", contact=", contact: {N: [x, y, 0]}", points=""))
     _assert_taken_and_agrees(system)
+
+
+SKEWED_WHEEL = """
+gacli: 1
+name: skewed_wheel
+parameters:
+  M: {value: 50}
+  I1: {value: 8}
+  I2: {value: 10}
+  I3: {value: 12}
+  mw: {value: 2}
+  J: {value: 0.06}
+  K: {value: 0.035}
+  d: {value: 0.3}
+  gam: {value: 0.4}
+  dl: {value: 0.3}
+inputs: [T]
+coordinates: [x, y, z, e0, e1, e2, e3, a]
+quasi_coordinates: [w_1, w_2, w_3]
+independent: [x, y, z, w_1, w_2, w_3, a]
+frames:
+  hub: {quaternion: [e0, e1, e2, e3], rates: [w_1, w_2, w_3]}
+  mount: {parent: hub, rotations: [[z, gam], [y, dl]]}
+  wheel: {parent: mount, rotations: [[x, a]]}
+points:
+  centre: {N: [x, y, z]}
+  wheelcentre: {from: centre, hub: [0, d, 0]}
+bodies:
+  hub: {mass: M, position: centre, frame: hub, inertia: [I1, I2, I3]}
+  wheel: {mass: mw, position: wheelcentre, frame: wheel, inertia: [J, K, K]}
+loads:
+  - {torque: [T, 0, 0], body: wheel, reaction: hub}
+"""
+
+
+@pytest.mark.parametrize("mount", ["[[z, gam], [y, dl]]", "[[y, 0.3]]"])
+def test_a_wheel_on_a_mount_turned_by_constants_is_taken(mount):
+    # Its centre is placed in the hub, where its spin is about no one axis: the builder refused the
+    # system, and its code took the closed forms at twice KanesMethod's operations.
+    assert _agrees_or_refuses(SKEWED_WHEEL.replace("[[z, gam], [y, dl]]", mount)) is None

@@ -152,12 +152,18 @@ def ancestors(links: dict[str, PointLink], point: str | None) -> list[str | None
     return out + [None]
 
 
+def _about_one_axis(placement: Placement) -> bool:
+    """Whether the placement's spins are all about one axis of its frame (none: a body at rest in it)."""
+    axes = {next(i for i in range(3) if v[i] != 0) for _, _, v in placement.spins}
+    return len(axes) <= 1 and all(sum(abs(x) for x in v) == 1 for _, _, v in placement.spins)
+
+
 def wheels_of(body: BodyPlacement, placement: Placement) -> tuple[Wheel, ...]:
     """The body as a wheel of its unit: its spins, all about one axis of the unit's frame."""
     if not placement.spins:
         return ()
     axes = {next(i for i in range(3) if v[i] != 0) for _, _, v in placement.spins}
-    if len(axes) != 1 or any(sum(abs(x) for x in v) != 1 for _, _, v in placement.spins):
+    if not _about_one_axis(placement):
         raise Unsupported(f"the spins of '{body.name}' are not about one axis of the frame it is assembled in")
     a = axes.pop()
     edges = tuple((e, s * v[a]) for e, s, v in placement.spins)
@@ -226,8 +232,11 @@ def _unit(tree: FrameTree, links: dict[str, PointLink], group: dict, coordinates
         body, options = members[0]
         if options is None:  # a particle: assembled along its own link's frame
             return Unit(((body, None),), body.point, links[body.point].frame, body.mass, (), ())
+        # Only where its spins are about one axis: a wheel on a skewed mount (turned by constants from
+        # the hub its centre is placed in) spins about no one axis of the hub, and of its mount's.
+        usable = {f: pl for f, pl in options.items() if _about_one_axis(pl)}
         link = links[body.point].frame
-        frame = link if link in options else _spun(tree, body, options, partial)
+        frame = link if link in usable else _spun(tree, body, usable, partial)
         return Unit(((body, options[frame]),), body.point, frame, body.mass, (), wheels_of(body, options[frame]))
     own = [links[b.point].frame for b, _ in members]
     frame = sorted(group["frames"], key=lambda f: (f not in own, f))[0]
