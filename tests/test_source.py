@@ -101,6 +101,13 @@ def test_a_key_indented_under_a_value_is_explained():
     assert "indented deeper than the key above it" in d.message
 
 
+def test_a_key_past_yamls_length_for_a_key_is_named():
+    # PyYAML reads a plain key of at most 1024 characters; past it the ':' was 'inside a value'.
+    d = _error_of("gacli: 1\nparameters:\n  " + "k" * 1100 + ": {value: 1}\n")
+    assert (d.location.line, d.location.column) == (3, 3)
+    assert "a key longer than 1024 characters" in d.message and "inside a value" not in d.message
+
+
 def test_a_tab_is_named():
     d = _error_of("gacli: 1\nparameters:\n\tm: {value: 1}\n")
     assert d.location.line == 3 and "tab" in d.message

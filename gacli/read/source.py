@@ -247,6 +247,18 @@ def _compose_fast(text: str) -> yaml.Node | None:
         loader.dispose()
 
 
+_YAML_KEY_LIMIT = 1024
+
+
+def _indent(mark) -> int:
+    """Where the marked line's text starts (0-based), where PyYAML kept the text; else 0."""
+    buffer, pointer = getattr(mark, "buffer", None), getattr(mark, "pointer", None)
+    if not isinstance(buffer, str) or pointer is None:
+        return 0
+    start = buffer.rfind("\n", 0, pointer) + 1
+    return len(buffer[start:pointer]) - len(buffer[start:pointer].lstrip(" "))
+
+
 def _marked_problem(exc: yaml.MarkedYAMLError) -> tuple[str, int, int]:
     """PyYAML's complaint in the file's terms, where PyYAML's own words are parser jargon."""
     mark = exc.problem_mark or exc.context_mark
@@ -260,6 +272,10 @@ def _marked_problem(exc: yaml.MarkedYAMLError) -> tuple[str, int, int]:
                 f"entries it follows (the block at line {context.line + 1} starts at column "
                 f"{context.column + 1}); entries of one mapping or list must start in the same column",
                 line, col)
+    if problem == "mapping values are not allowed here" and col > _YAML_KEY_LIMIT:
+        # PyYAML ends a plain key at 1024 characters and then finds this ':' inside a value.
+        return (f"invalid YAML: a key longer than {_YAML_KEY_LIMIT} characters, the most YAML reads as "
+                "a key; shorten it", line, 1 + _indent(mark))
     if problem == "mapping values are not allowed here":
         return ("invalid YAML: a ':' inside a value: this line is indented deeper than the key above it, so it "
                 "reads as part of that key's value; start it in the same column as its siblings, or quote "
