@@ -33,10 +33,14 @@ def remainder_on(expr: sp.Expr, all_spheres: tuple[Sphere, ...]) -> sp.Expr:
         x = sphere.symbols
         if not expr.free_symbols & set(x) or not expr.is_polynomial(*x):
             continue
+        # Functions free of x (a turntable's sin β) as symbols: SymPy reduces over their expressions
+        # as coefficients in its slowest domain (600 nodes, 2 s), over symbols in a polynomial ring.
+        named = {f: sp.Dummy() for f in sorted(expr.atoms(sp.Function), key=sp.default_sort_key)}
         try:
-            expr = sp.reduced(sp.expand(expr), [sp.Add(*(y ** 2 for y in x)) - sphere.radius2], *x)[1]
+            reduced = sp.reduced(sp.expand(expr.xreplace(named)), [sp.Add(*(y ** 2 for y in x)) - sphere.radius2], *x)[1]
         except (PolynomialError, CoercionFailed, GeneratorsNeeded):
             continue
+        expr = reduced.xreplace({d: f for f, d in named.items()})
     return expr
 
 

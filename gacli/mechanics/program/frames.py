@@ -237,7 +237,8 @@ class FrameTree:
         if key not in self._omega:
             out, f = ZV, frame
             while f != top:
-                out = add(out, scale(self.rate(f, rates), self._axis(f, top)))
+                out = add(out, self._relative_along(f, top, rates) if self.edges[f].axis < 0
+                          else scale(self.rate(f, rates), self._axis(f, top)))
                 f = self.edges[f].parent
             self._omega[key] = self.tape.vec(out)
         return self._omega[key]
@@ -248,11 +249,23 @@ class FrameTree:
         times the turning of that axis, ω of its parent relative to top × the axis."""
         out, f = ZV, frame
         while f != top:
-            parent, axis = self.edges[f].parent, self._axis(f, top)
-            rest = self.held_acceleration([f], actual) + (self.rate(f, gamma) if gamma is not None else ZERO)
-            out = add(out, scale(rest, axis), scale(self.rate(f, actual), cross(self.over(parent, top, actual), axis)))
+            parent = self.edges[f].parent
+            if self.edges[f].axis < 0:  # a quaternion's ω relative to its parent: held, its components
+                # do not change (body rates, or 2 G(e) ė with G(ė) ė = 0); only their turning into top
+                turned = self._relative_along(f, top, actual)
+                out = add(out, cross(self.over(parent, top, actual), turned))
+                if gamma is not None:
+                    out = add(out, self._relative_along(f, top, gamma))
+            else:
+                axis = self._axis(f, top)
+                rest = self.held_acceleration([f], actual) + (self.rate(f, gamma) if gamma is not None else ZERO)
+                out = add(out, scale(rest, axis), scale(self.rate(f, actual), cross(self.over(parent, top, actual), axis)))
             f = parent
         return self.tape.vec(out)
+
+    def _relative_along(self, edge: str, top: str, rates: Pass) -> tuple:
+        """A quaternion edge's ω relative to its parent (:meth:`relative`) along its ancestor ``top``."""
+        return self.express(self.relative(edge, rates), edge, top)
 
     def omega_along(self, frame: str, top: str, rates: Pass) -> tuple:
         """ω of ``frame`` along its ancestor ``top``: ω_top + :meth:`over`."""
@@ -280,13 +293,12 @@ class FrameTree:
         return self.express(unit(e.axis), e.parent, top, key=("axis", edge))
 
     def above(self, frame: str, top: str) -> list[str] | None:
-        """The edges from ``frame`` up to its ancestor ``top``, each about a frame axis; None when
-        top is not an ancestor or a quaternion edge is between."""
+        """The edges from ``frame`` up to its ancestor ``top`` (about a frame axis, or a quaternion's);
+        None when top is not an ancestor."""
         chain = self.chain(frame)
         if top not in chain:
             return None
-        edges = chain[:chain.index(top)]
-        return None if any(self.edges[e].quaternion is not None for e in edges) else edges
+        return chain[:chain.index(top)]
 
     def nz(self, frame: str) -> tuple:
         """N's z axis along the frame's axes (a turn about it changes nothing: from the group's top)."""
