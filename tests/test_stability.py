@@ -166,3 +166,33 @@ def test_a_sweep_goes_on_past_a_value_where_the_equations_are_singular():
                                    "--at", "dot(q)=20"])
     assert cli.exit_code == 0, cli.output
     assert re.search(r"^\s+0\s+-\s+not defined here$", cli.output, re.M) and "1 of the 5 values is not defined" in cli.output
+
+
+ROD = """
+gacli: 1
+name: rod
+parameters:
+  m: {value: 1}
+functions:
+  Omega: rate of the rod
+coordinates: [r, theta]
+constraints:
+  - dtheta = Omega*dt
+independent: [r]
+bodies:
+  bead: {mass: m, position: [r*cos(theta), r*sin(theta)]}
+"""
+
+
+def test_a_coordinate_a_function_of_time_multiplies_is_not_ignorable(tmp_path):
+    # r'' = Ω² r: a bead flung out along a rod turned at Ω. With Ω probed at 0, r looked ignorable,
+    # and the sweep said 'stable for Omega in [0.5, 3]'; the eigenvalues are ±Ω.
+    path = tmp_path / "rod.yaml"
+    path.write_text(ROD)
+    import gacli
+
+    result = gacli.stability(str(path), {"Omega": 2.0})
+    assert not result.stable and "r" in result.state
+    assert np.allclose(sorted(result.eigenvalues.real), [-2.0, 2.0])
+    out = CliRunner().invoke(app, ["linearize", str(path), "--sweep", "Omega=0.5:3:6"])
+    assert out.exit_code == 0 and "stable nowhere in [0.5, 3]" in out.output

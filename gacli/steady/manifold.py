@@ -49,17 +49,22 @@ class Reduction:
 
 def reduce_state(derivation: Derivation, parameters: Mapping[str, float]) -> Reduction:
     """Which coordinates a perturbation of a steady motion may move (see the module's text)."""
+    from gacli.emit.naming import layout
     from gacli.linearize import linearizer
 
     linearize = linearizer(derivation)
     names = tuple(c.name for c in derivation.system.coordinates)
     speeds = tuple(str(u) for u in derivation.speeds)
+    # Inputs and functions of time at generic values too: at 0, a rod turned at Ω(t) left r out of
+    # Ω² r, and r was taken for ignorable (a bead flung out along the rod called stable).
+    driving = tuple(layout(derivation).r)
     depends = np.zeros((len(names) + len(speeds), len(names)), dtype=bool)
     rng = np.random.default_rng(_SEED)
     # Which symbols enter does not hang on the values: a parameter the file leaves open gets a generic one.
     parameters = {**{p.name: float(rng.uniform(0.5, 1.5)) for p in derivation.system.parameters}, **parameters}
     for _ in range(_SAMPLES):
-        at = {n: float(v) for n, v in zip(names + speeds, rng.uniform(-0.4, 0.4, len(names) + len(speeds)))}
+        state = names + speeds + driving
+        at = {n: float(v) for n, v in zip(state, rng.uniform(-0.4, 0.4, len(state)))}
         A = linearize(at, parameters).A
         scale = max(1.0, float(np.abs(A).max()))
         depends |= np.abs(A[:, :len(names)]) > _ZERO * scale
