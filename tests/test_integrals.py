@@ -123,3 +123,33 @@ def test_a_momentum_broken_without_constraints_is_blamed_on_the_loads():
                    "bodies: {b: {mass: m, position: [x, y, 0]}}\npotential: m*g*y\n")
     broken = dict(integrals(derive(system)).broken)
     assert broken["momentum of y"].startswith("the loads or the potential break it")
+
+
+RING = """
+gacli: 1
+name: ring
+parameters:
+  m: {value: 1}
+  R: {value: 0.5}
+functions:
+  Omega: rate at which the ring turns
+coordinates: [phi, theta]
+constraints:
+  - dtheta = Omega*dt
+independent: [phi]
+bodies:
+  bead: {mass: m, position: [R*cos(theta + phi), R*sin(theta + phi)]}
+"""
+
+
+def test_an_integral_through_a_function_of_time_is_judged_with_its_rate():
+    # A bead on a frictionless ring turned at Ω(t): φ'' = −Ω', so p = m R² (Ω + φ') is conserved;
+    # driven along the ring by m R² Ω' dφ, φ'' = 0 and p is not. dG/dt had left out Ω' ∂G/∂Ω, and
+    # the two verdicts were the other way round.
+    from gacli.loader.loading import loads
+    from gacli.mechanics.equations import derive
+
+    p = _s("R") ** 2 * _s("m") * (_s("Omega") + sp.Symbol("dot(phi)", real=True))
+    free = integrals(derive(loads(RING)), candidates=[p], search=False).candidates
+    driven = integrals(derive(loads(RING + "work: m*R**2*dot(Omega)*dphi\n")), candidates=[p], search=False).candidates
+    assert [c.conserved for c in free] == [True] and [c.conserved for c in driven] == [False]

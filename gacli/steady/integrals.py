@@ -160,8 +160,22 @@ def rate_along(derivation: Derivation, G: sp.Expr) -> sp.Expr:
     along_q = sum((sp.diff(G, q) * e for q, e in kinematic.items()), sp.S.Zero)
     grad_u = sp.Matrix([[sp.diff(G, u) for u in speeds]])
     along_q += sp.diff(G, S.T)     # an integral may hold t (Jacobi's, with a support turning steadily)
+    along_q += _through_functions(derivation, G)
     det, adjugate_F = _det_and_adjugate_times(M, F)
     return det * along_q + sum((g * a for g, a in zip(grad_u, adjugate_F)), sp.S.Zero)
+
+
+def _through_functions(derivation: Derivation, G: sp.Expr) -> sp.Expr:
+    """G's rate through the free functions of time it holds, Σ ∂G/∂f⁽ᵏ⁾ f⁽ᵏ⁺¹⁾: t in them is t too.
+    The rates are free symbols, so what is proved holds whatever the functions do (a ring turned at
+    Ω(t): p = m R² (Ω + φ̇) is conserved, and its rate had missed m R² Ω̇ where a load cancels it)."""
+    out = []
+    for f in derivation.system.free_functions:
+        for order in range(4):
+            symbol = S.value(f.name) if order == 0 else S.rate(f.name, order)
+            if G.has(symbol):
+                out.append(sp.diff(G, symbol) * S.rate(f.name, order + 1))
+    return sp.Add(*out)
 
 
 def _det_and_adjugate_times(M: sp.Matrix, F: sp.Matrix) -> tuple[sp.Expr, list[sp.Expr]]:
