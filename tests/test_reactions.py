@@ -202,3 +202,17 @@ def test_c_refuses_the_numeric_route_with_repeated_rows(monkeypatch):
     monkeypatch.setattr(gacli.algebra.readable, "displayable", lambda derivation: False)
     with pytest.raises(EmitError, match="repeated constraint rows"):
         emit_c(derived("differential_drive"), reactions=True)
+
+
+@pytest.mark.parametrize("name", ["routh_sphere", "chaplygin_ball"])
+def test_the_text_reactions_of_a_shipped_sphere_are_printed(name):
+    # derive --reactions ran out of its 120 s tidying λ: sympy's cancel (Routh's sphere) and expand of
+    # quotients by sums inside trig.reduce and the rates' collection (Chaplygin's ball), unbounded.
+    from typer.testing import CliRunner
+
+    from gacli.cli import app
+    from conftest import SYSTEMS
+
+    result = CliRunner().invoke(app, ["derive", str(SYSTEMS / f"{name}.yaml"), "--reactions"])
+    assert result.exit_code == 0, result.output
+    assert "lambda_0 =" in result.output and "lambda_1 =" in result.output

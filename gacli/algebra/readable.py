@@ -94,7 +94,7 @@ class Tidy:
         is small (counted first); the caller keeps it when it prints shorter.
         """
         rates = sorted((s for s in expr.free_symbols if RATE_NAME.match(s.name)), key=sp.default_sort_key)
-        if not rates or not _expands_small(expr, COLLECT_TERMS):
+        if not rates or not _expands_small(expr, COLLECT_TERMS) or not trig.small_or_whole(expr):
             return None
         groups: dict[sp.Expr, list[sp.Expr]] = {}
         for term in sp.Add.make_args(sp.expand(expr)):
@@ -252,6 +252,7 @@ def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
 # cancelled up to this size, then simplified while it is this small: operations, not seconds.
 SOLVED_CANCEL_OPS = 3000
 SOLVED_SIMPLIFY_OPS = 150
+SOLVED_CANCEL_SINES_OPS = 300
 
 
 def solved_tidy(expr: sp.Expr) -> sp.Expr:
@@ -261,6 +262,11 @@ def solved_tidy(expr: sp.Expr) -> sp.Expr:
     their size in operations, ``simplify`` cannot run away on them.
     """
     if sp.count_ops(expr) > SOLVED_CANCEL_OPS:
+        return expr
+    if sp.count_ops(expr) > SOLVED_CANCEL_SINES_OPS and expr.has(sp.sin, sp.cos):
+        # cancel's gcd of polynomials in sines and cosines as generators can run away: Routh's
+        # sphere's λ, 432 operations, did not finish in 15 minutes; read as readable reads any
+        # expression it grew threefold, and Chaplygin's ball's ran as long in trig.reduce's expand.
         return expr
     expr = sp.cancel(expr)
     return sp.simplify(expr) if sp.count_ops(expr) <= SOLVED_SIMPLIFY_OPS else expr
