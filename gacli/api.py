@@ -125,4 +125,6 @@ def integrals(system, candidates=()):
     from gacli.steady.integrals import integrals as find, parse_candidate
 
     derivation = derived(system)
+    if isinstance(candidates, str):  # one candidate, not its characters
+        candidates = [candidates]
     return find(derivation, [c if not isinstance(c, str) else parse_candidate(derivation, c) for c in candidates])

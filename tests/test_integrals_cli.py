@@ -55,6 +55,8 @@ def test_api_names():
     g, r = sp.Symbol("g", real=True), sp.Symbol("r", real=True)
     assert len(conditions) == 1 and sp.simplify(conditions[0].subs(w, sp.sqrt(g / (3 * r)))) == 0
     assert [c.conserved for c in gacli.integrals(TOP, ["C*dot(q)"]).candidates] == [True]
+    # One string is one candidate, not its characters ("--candidate *: expected an expression").
+    assert [c.conserved for c in gacli.integrals(TOP, "C*dot(q)").candidates] == [True]
     assert gacli.steady(str(SYSTEMS / "chaplygin_sleigh.yaml")).ignorable == ("x", "y", "theta")
 
 
