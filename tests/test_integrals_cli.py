@@ -37,6 +37,18 @@ def test_a_constant_or_complex_candidate_is_a_usage_error(candidate, message):
     assert result.exit_code == 2 and message in result.output and "Traceback" not in result.output
 
 
+def test_a_candidate_may_hold_a_function_of_time(tmp_path):
+    # A bead on a ring turned at Ω(t): p = m R² (Ω + φ̇) is conserved; 'Omega' was 'not declared'.
+    from test_integrals import RING
+
+    path = tmp_path / "ring.yaml"
+    path.write_text(RING)
+    result = CliRunner().invoke(app, ["integrals", str(path), "--candidate", "m*R**2*(Omega + dot(phi))"])
+    assert result.exit_code == 0 and "conserved (proved symbolically)" in result.output, result.output
+    alone = CliRunner().invoke(app, ["integrals", str(path), "--candidate", "Omega"])
+    assert alone.exit_code == 1 and "not conserved" in alone.output
+
+
 def test_json_lists_the_sleighs_broken_momentum():
     result = CliRunner().invoke(app, ["integrals", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "json"])
     assert result.exit_code == 0, result.output

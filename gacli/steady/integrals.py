@@ -264,16 +264,18 @@ def parse_candidate(derivation: Derivation, text: str) -> sp.Expr:
 
     system = derivation.system
     names = [c.name for c in system.coordinates] + list(derivation.independent)
-    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]}
-    rates = {(n, 1): S.rate(n) for n in names}
+    functions = [f.name for f in system.free_functions]  # a ring's mark turned at Ω(t): m R² (Ω + φ̇)
+    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]
+              + functions}
+    rates = {(n, 1): S.rate(n) for n in names + functions}
     try:
         expr = build(parse(text), Scope(values=values, rates=rates, declared=frozenset(names),
-                                        rate_note="a candidate holds coordinates, their rates and parameters"))
+                                        rate_note="a candidate holds coordinates, their rates, parameters and functions of time"))
     except (ParseError, BuildError) as exc:
         raise OptionError([f"--candidate {text}: {exc.message}"]) from None
     # sqrt(-1) or 3 was 'conserved (proved symbolically)': true of any constant, and says nothing.
     if expr.has(sp.I, sp.zoo, sp.nan, sp.oo, -sp.oo):
         raise OptionError([f"--candidate {text}: is not a real expression"])
-    if not expr.free_symbols & {*(values[c.name] for c in system.coordinates), *rates.values()}:
+    if not expr.free_symbols & {*(values[n] for n in [c.name for c in system.coordinates] + functions), *rates.values()}:
         raise OptionError([f"--candidate {text}: holds no coordinate or rate (every constant is conserved)"])
     return expr
