@@ -5,9 +5,11 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-for p in ("/work/main/benchmarks", "/work/main/benchmarks/kane_set"):
+# This checkout's benchmarks, never a path of one machine: a fixed /work/main/benchmarks put that
+# checkout's bench modules, and through them its gacli, under every variant run of another worktree.
+for p in (str(HERE.parents[2]), str(HERE.parents[1])):
     if p not in sys.path:
-        sys.path.insert(0, p)
+        sys.path.append(p)
 
 import sympy as sp
 from sympy.physics import mechanics as me
