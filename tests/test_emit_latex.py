@@ -408,3 +408,32 @@ def test_dots_stand_over_the_letter_of_a_subscripted_override():
     printer = GacliLatexPrinter({"wheel_R": r"\theta_R", "beta": r"\beta_{12}"})
     assert printer.doprint(sp.Symbol("dot(wheel_R)")) == r"\dot{\theta}_R"
     assert printer.doprint(sp.Symbol("ddot(beta)")) == r"\ddot{\beta}_{12}"
+
+
+SPRING = """
+gacli: 1
+name: spring_gravity
+parameters:
+  m: {value: 1}
+  k: {value: 2}
+  g: {value: 9.81}
+coordinates: [z]
+bodies:
+  b: {mass: m, position: [0, 0, z]}
+potential: k*z**2/2 + m*g*z
+"""
+
+
+def test_a_sum_whose_terms_are_all_negative_keeps_every_sign(tmp_path):
+    # Q_z = −(g m + k z) printed '- g m + k z': the minus pulled out of the sum applied to its first
+    # term only, and the spring pushed the wrong way in LaTeX, --steps and the notebook.
+    import gacli
+    from gacli.emit.latex_printer import GacliLatexPrinter
+
+    path = tmp_path / "spring.yaml"
+    path.write_text(SPRING)
+    d = gacli.derive(gacli.load(path))
+    (text,) = gacli.emit(d, "latex").values()
+    q = d.generalized_forces[0]
+    expected = GacliLatexPrinter().doprint(sp.expand(q))
+    assert f"Q_{{z}} &= {expected}" in text

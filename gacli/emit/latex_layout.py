@@ -139,6 +139,10 @@ def _rank(monomial: sp.Expr) -> tuple:
 def signed(part: Part) -> tuple[bool, Part]:
     """The part with its sign pulled out of the coefficient (and differences oriented)."""
     negative, coefficient = oriented(part.coefficient)
+    if negative and part.monomial == 1 and coefficient.is_Add:
+        # A sum standing alone is printed unbracketed (part_tex): its minus pulled out before it would
+        # apply to its first term only (−(g m + k z) printed as − g m + k z). It keeps its own signs.
+        return False, Part(-coefficient, 1)
     return negative, Part(coefficient, part.monomial)
 
 
