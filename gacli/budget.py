@@ -14,7 +14,7 @@ import contextlib
 import traceback
 from collections.abc import Iterator
 
-from gacli.errors import DerivationError, Diagnostic, Location, SystemFileError
+from gacli.errors import Diagnostic, Location, OutOfTime, SystemFileError
 from gacli.numeric.zero import time_limit
 
 DEFAULT_TIMEOUT = 120.0
@@ -25,7 +25,7 @@ STEP_READ = "reading the file"
 STEP_LOAD = "loading the declarations and expressions"
 
 
-class _OutOfTime(DerivationError):
+class _OutOfTime(OutOfTime):
     """Raised by the alarm inside the work; turned into a located error on the way out."""
 
 

@@ -70,5 +70,10 @@ class DerivationError(GacliError):
     """A derivation step could not be completed (for instance it ran out of time)."""
 
 
+class OutOfTime(DerivationError):
+    """A command's time budget ran out inside the work (gacli.budget raises it from its alarm): never
+    taken for a failure of the step it interrupts, which may have a fallback of its own."""
+
+
 class EmitError(GacliError):
     """An expression has no rendering in the requested output format."""

@@ -260,3 +260,23 @@ def test_an_alarm_inside_a_finalizer_prints_no_traceback(monkeypatch):
             del slow  # the alarm fires inside its finalizer
             time.sleep(2)  # and again here
     assert unraisable == []
+
+
+SLOW_PROGRAM = """
+gacli: 1
+name: slow_program
+parameters: {m: {value: 1}}
+coordinates: [x, y]
+bodies:
+  p: {mass: m, position: [(sin(x) + cos(y))**20, y, 0]}
+"""
+
+
+@pytest.mark.parametrize("command", [["check"], ["derive", "-f", "python"]])
+def test_a_budget_spent_in_the_program_builder_is_not_taken_for_its_failure(command, tmp_path):
+    # The builder's 'except Exception' caught the alarm: check said 'ok' at exactly its budget, and
+    # derive -f python went on to the closed forms and wrote code after the budget ran out.
+    path = tmp_path / "slow.yaml"
+    path.write_text(SLOW_PROGRAM)
+    result = run(*command, path, "--timeout", "2")
+    assert_located_error(result, path, "ran out of time")

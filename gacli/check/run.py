@@ -36,6 +36,7 @@ from gacli.errors import (
     Diagnostic,
     GacliError,
     Location,
+    OutOfTime,
     SystemFileError,
 )
 from gacli.display.report import dependent_rows
@@ -177,7 +178,7 @@ def _expiry(findings: _Findings, seconds: float | None) -> Callable[[], Derivati
     """The error the time budget raises: it names the step that was running."""
     def error() -> DerivationError:
         findings.expired = True
-        return DerivationError(_timeout_message(findings.step, seconds))
+        return OutOfTime(_timeout_message(findings.step, seconds))
     return error
 
 

@@ -35,6 +35,7 @@ from gacli.algebra.graph import cse_operations, is_small, postorder, trees_withi
 from gacli.algebra.angle_sums import angle_sums_compacted
 from gacli.algebra.readable import readable
 from gacli.algebra.spheres import remainder_on
+from gacli.errors import OutOfTime
 from gacli.algebra.terms import factor_terms
 from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
@@ -264,6 +265,8 @@ def program_for(system: System) -> Program | None:
     names = tuple(c.name for c in system.coordinates)
     try:
         program = build_program(system, judge=lambda p: _judged(p, names))
+    except OutOfTime:  # the command's budget, not the builder's failure: the closed forms would run on
+        raise
     except Exception:  # noqa: BLE001 - see above
         program = None
     _PROGRAMS[key] = (system.bodies, system.independent, program)
@@ -276,6 +279,8 @@ def _judged(program: Program, names: tuple[str, ...]) -> float:
     for it (the builder's cheapest would otherwise be lost with it)."""
     try:
         return from_program(program, names).operations
+    except OutOfTime:
+        raise
     except Exception:  # noqa: BLE001 - a judgement, not the derivation
         return float("inf")
 
