@@ -261,9 +261,10 @@ def solved_tidy(expr: sp.Expr) -> sp.Expr:
     The constraint forces of ``--reactions`` are such quotients; bounded by
     their size in operations, ``simplify`` cannot run away on them.
     """
-    if sp.count_ops(expr) > SOLVED_CANCEL_OPS:
+    ops = sp.count_ops(expr)
+    if ops > SOLVED_CANCEL_OPS:
         return expr
-    if sp.count_ops(expr) > SOLVED_CANCEL_SINES_OPS and expr.has(sp.sin, sp.cos):
+    if ops > SOLVED_CANCEL_SINES_OPS and expr.has(sp.sin, sp.cos):
         # cancel's gcd of polynomials in sines and cosines as generators can run away: Routh's
         # sphere's λ, 432 operations, did not finish in 15 minutes; read as readable reads any
         # expression it grew threefold, and Chaplygin's ball's ran as long in trig.reduce's expand.

@@ -16,12 +16,11 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.algebra.graph import trees_within
-from gacli.algebra.turn_products import PRODUCTS_NODES, NotTurned, products
+from gacli.algebra.turn_products import PRODUCTS_NODES, TRIG_FACTORS, NotTurned, products
 
-# Tree nodes of what is rewritten, and trig factors in one product, at most: the terms of a
-# product of k sums of two double each time.
+# Tree nodes of what SymPy's expand rewrites, at most (trig factors in one product: TRIG_FACTORS, as
+# turn_products reads them): the terms of a product of k sums of two double each time.
 TURNED_NODES = 2_000
-TRIG_FACTORS = 8
 
 
 def turns(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | None:

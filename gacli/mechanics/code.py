@@ -35,8 +35,8 @@ from gacli.algebra.graph import cse_operations, is_small, postorder, trees_withi
 from gacli.algebra.angle_sums import angle_sums_compacted
 from gacli.algebra.readable import readable
 from gacli.algebra.spheres import remainder_on
-from gacli.errors import OutOfTime
 from gacli.algebra.terms import factor_terms
+from gacli.errors import OutOfTime
 from gacli.mechanics.program import Program, build_program
 from gacli.mechanics.program.record import program_operations
 from gacli.model import System

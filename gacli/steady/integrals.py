@@ -159,23 +159,13 @@ def rate_along(derivation: Derivation, G: sp.Expr) -> sp.Expr:
     M, F = sp.Matrix(derivation.mass_matrix), sp.Matrix(derivation.forcing)
     along_q = sum((sp.diff(G, q) * e for q, e in kinematic.items()), sp.S.Zero)
     grad_u = sp.Matrix([[sp.diff(G, u) for u in speeds]])
-    along_q += sp.diff(G, S.T)     # an integral may hold t (Jacobi's, with a support turning steadily)
-    along_q += _through_functions(derivation, G)
+    # An integral may hold t (Jacobi's, with a support turning steadily) and the free functions of time:
+    # their rates are free symbols, so what is proved holds whatever the functions do (a ring turned at
+    # Ω(t): p = m R² (Ω + φ̇) is conserved, and its rate had missed m R² Ω̇ where a load cancels it).
+    timed = S.time_chain(f.name for f in derivation.system.free_functions)
+    along_q += sp.Add(*(sp.diff(G, s) * rate for s, rate in timed.items() if G.has(s)))
     det, adjugate_F = _det_and_adjugate_times(M, F)
     return det * along_q + sum((g * a for g, a in zip(grad_u, adjugate_F)), sp.S.Zero)
-
-
-def _through_functions(derivation: Derivation, G: sp.Expr) -> sp.Expr:
-    """G's rate through the free functions of time it holds, Σ ∂G/∂f⁽ᵏ⁾ f⁽ᵏ⁺¹⁾: t in them is t too.
-    The rates are free symbols, so what is proved holds whatever the functions do (a ring turned at
-    Ω(t): p = m R² (Ω + φ̇) is conserved, and its rate had missed m R² Ω̇ where a load cancels it)."""
-    out = []
-    for f in derivation.system.free_functions:
-        for order in range(4):
-            symbol = S.value(f.name) if order == 0 else S.rate(f.name, order)
-            if G.has(symbol):
-                out.append(sp.diff(G, symbol) * S.rate(f.name, order + 1))
-    return sp.Add(*out)
 
 
 def _det_and_adjugate_times(M: sp.Matrix, F: sp.Matrix) -> tuple[sp.Expr, list[sp.Expr]]:
@@ -263,10 +253,10 @@ def parse_candidate(derivation: Derivation, text: str) -> sp.Expr:
     from gacli.simulate.spec import OptionError
 
     system = derivation.system
-    names = [c.name for c in system.coordinates] + list(derivation.independent)
+    coordinates = [c.name for c in system.coordinates]
+    names = coordinates + list(derivation.independent)
     functions = [f.name for f in system.free_functions]  # a ring's mark turned at Ω(t): m R² (Ω + φ̇)
-    values = {n: S.value(n) for n in [p.name for p in system.parameters] + [c.name for c in system.coordinates]
-              + functions}
+    values = {n: S.value(n) for n in [p.name for p in system.parameters] + coordinates + functions}
     rates = {(n, 1): S.rate(n) for n in names + functions}
     try:
         expr = build(parse(text), Scope(values=values, rates=rates, declared=frozenset(names),
@@ -276,6 +266,6 @@ def parse_candidate(derivation: Derivation, text: str) -> sp.Expr:
     # sqrt(-1) or 3 was 'conserved (proved symbolically)': true of any constant, and says nothing.
     if expr.has(sp.I, sp.zoo, sp.nan, sp.oo, -sp.oo):
         raise OptionError([f"--candidate {text}: is not a real expression"])
-    if not expr.free_symbols & {*(values[n] for n in [c.name for c in system.coordinates] + functions), *rates.values()}:
+    if not expr.free_symbols & {*(values[n] for n in coordinates + functions), *rates.values()}:
         raise OptionError([f"--candidate {text}: holds no coordinate or rate (every constant is conserved)"])
     return expr

@@ -274,18 +274,13 @@ def row_vectors(tree: FrameTree, c: Contact) -> list[tuple]:
     """The directions v_C = 0 is taken along, in S: for a wheel forward (a × o), along the axle and
     vertical (N.z): the spin moves the contact forward only, a turn about N.z horizontally only,
     so the rows are as sparse as the geometry allows. A sphere's (an ellipsoid's) along S's axes where
-    S's z axis is the plane's normal, else along the plane's axes, its normal last: v_C along the plane holds the centre's rates with pivots 1 (or a turntable's
-    cos, sin), where along S's own axes the two rows kept for them divide by S's z·n, zero whenever S's
-    z axis lies in the plane (a ball in a quaternion frame on a turntable: 1/(e0² − e1² − e2² + e3²))."""
-    if c.axis is None:
-        if tuple(normal(tree, c.frame, c.plane)) == (0, 0, 1):  # S turns about n alone: its axes do
-            return [unit(0), unit(1), unit(2)]
-        return [_plane_axis(tree, c, i) for i in range(3)]
-    return [tree.tape.vec(cross(unit(c.axis), c.o)), unit(c.axis), normal(tree, c.frame, c.plane)]
-
-
-def _plane_axis(tree: FrameTree, c: Contact, i: int) -> tuple:
-    """The plane's frame's axis i along S."""
-    if c.plane == INERTIAL and i == 2:
-        return tree.nz(c.frame)
-    return tree.express(unit(i), c.plane, c.frame, key=("plane axis", c.plane, i))
+    S's z axis is the plane's normal, else along the plane's axes, its normal last: along the plane the
+    centre's rates have pivots 1 (or a turntable's cos, sin), where along S's own axes the two rows
+    kept for them divide by S's z·n, zero whenever S's z axis lies in the plane (a ball in a
+    quaternion frame on a turntable: 1/(e0² − e1² − e2² + e3²))."""
+    n = normal(tree, c.frame, c.plane)
+    if c.axis is not None:
+        return [tree.tape.vec(cross(unit(c.axis), c.o)), unit(c.axis), n]
+    if tuple(n) == (0, 0, 1):  # S turns about n alone: its axes do
+        return [unit(0), unit(1), unit(2)]
+    return [tree.express(unit(i), c.plane, c.frame, key=("plane axis", c.plane, i)) for i in (0, 1)] + [n]

@@ -162,10 +162,9 @@ def wheels_of(body: BodyPlacement, placement: Placement) -> tuple[Wheel, ...]:
     """The body as a wheel of its unit: its spins, all about one axis of the unit's frame."""
     if not placement.spins:
         return ()
-    axes = {next(i for i in range(3) if v[i] != 0) for _, _, v in placement.spins}
     if not _about_one_axis(placement):
         raise Unsupported(f"the spins of '{body.name}' are not about one axis of the frame it is assembled in")
-    a = axes.pop()
+    a = next(i for i in range(3) if placement.spins[0][2][i] != 0)
     edges = tuple((e, s * v[a]) for e, s, v in placement.spins)
     return (Wheel(a, placement.inertia[a, a], edges, body.name),)
 

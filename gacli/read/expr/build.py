@@ -16,7 +16,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from gacli.read.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate
+from gacli.read.expr.grammar import BinOp, Call, Name, Neg, Node, Num, Rate, chain
 from gacli.algebra.symbols import rate_name
 
 MAX_EXPONENT = 100
@@ -145,17 +145,6 @@ def _binop(node: BinOp, scope: Scope) -> sp.Expr:
     return _defined(left**right, node.pos)
 
 
-def _chain(node: BinOp, ops: frozenset[str]) -> tuple[Node, list[BinOp]]:
-    """The first operand of a chain a ∘ b ∘ c ... of ``ops`` and its links, left to right, by a loop:
-    a chain of 2,000 terms is a tree 2,000 tall (gacli.read.expr.grammar)."""
-    links = []
-    left: Node = node
-    while isinstance(left, BinOp) and left.op in ops:
-        links.append(left)
-        left = left.left
-    return left, links[::-1]
-
-
 def _sum(node: BinOp, scope: Scope) -> sp.Expr:
     """A chain a ± b ± c ... as one Add of its terms.
 
@@ -164,7 +153,7 @@ def _sum(node: BinOp, scope: Scope) -> sp.Expr:
     each ``a - b`` is ``Add(a, -b)``), so the result is the same expression.
     The terms are built left to right, so the first error is the same too.
     """
-    first, links = _chain(node, _ADDITIVE)
+    first, links = chain(node)
     terms = [build(first, scope)]
     for link in links:
         right = build(link.right, scope)
@@ -175,7 +164,7 @@ def _sum(node: BinOp, scope: Scope) -> sp.Expr:
 def _product(node: BinOp, scope: Scope) -> sp.Expr:
     """A chain a * b / c ... as one Mul of its factors, each divisor refused where it is zero, as
     :func:`_sum` does for a sum (the same expression, built in one step)."""
-    first, links = _chain(node, _MULTIPLICATIVE)
+    first, links = chain(node)
     factors = [build(first, scope)]
     for link in links:
         right = build(link.right, scope)

@@ -220,17 +220,30 @@ def _operand(node: Node, weakest: int) -> str:
 def _render_binop(node: BinOp) -> str:
     if node.op == "**":  # (-x)**y, (a**b)**c: the base must be an atom
         return _operand(node.left, _ATOM) + "**" + _operand(node.right, _UNARY)
-    # Follow the left spine of a left-associative chain with a loop: a long
-    # sum is a deep tree, and recursing down it would hit the recursion limit.
+    level = _PRECEDENCE[node.op]
+    first, links = chain(node)
+    parts = [_operand(first, level)]
+    for link in links:
+        parts += [_SPELLING[link.op], _operand(link.right, level + 1)]
+    return "".join(parts)
+
+
+def chain(node: BinOp) -> tuple[Node, list[BinOp]]:
+    """The first operand of the left-associative chain ``node`` ends (a ± b ± c ..., or a product) and
+    its links, left to right, found by a loop: a long sum is a deep tree, and recursing down it would
+    hit the recursion limit."""
     level, links = _PRECEDENCE[node.op], []
     left: Node = node
     while isinstance(left, BinOp) and _PRECEDENCE[left.op] == level:
         links.append(left)
         left = left.left
-    parts = [_operand(left, level)]
-    for link in reversed(links):
-        parts += [_SPELLING[link.op], _operand(link.right, level + 1)]
-    return "".join(parts)
+    return left, links[::-1]
+
+
+def continues_chain(node: BinOp) -> bool:
+    """Whether ``node``'s left operand is a link of the same sum or product (a power is never one)."""
+    left = node.left
+    return node.op != "**" and isinstance(left, BinOp) and _PRECEDENCE[left.op] == _PRECEDENCE[node.op]
 
 
 def children(node: Node) -> tuple[Node, ...]:

@@ -24,6 +24,7 @@ from gacli.read.expr.grammar import (
     ParseError,
     Rate,
     children,
+    continues_chain,
 )
 from gacli.read.expr.tokens import Token, describe, show, tokenize
 
@@ -86,7 +87,7 @@ class _Parser:
         """Record the height of a new inner node, refusing trees taller than MAX_DEPTH."""
         # Keys by id() are safe: every node made here stays alive in the tree.
         heights = self.heights
-        if isinstance(node, BinOp) and _links(node):  # one more link of a chain: the chain is one level
+        if isinstance(node, BinOp) and continues_chain(node):  # one more link of a chain: the chain is one level
             height = max(heights.get(id(node.left), 0), 1 + heights.get(id(node.right), 0))
         elif isinstance(node, BinOp):
             height = 1 + max(heights.get(id(node.left), 0), heights.get(id(node.right), 0))
@@ -221,15 +222,6 @@ class _Parser:
         line = self.text.count("\n", 0, pos) + 1
         column = pos - (self.text.rfind("\n", 0, pos) + 1) + 1
         return f"column {column}" if line == 1 else f"line {line}, column {column}"
-
-
-_CHAINS = ({"+", "-"}, {"*", "/"})
-
-
-def _links(node: BinOp) -> bool:
-    """Whether ``node`` continues a chain of sums or of products: its left operand is one of the same kind."""
-    left = node.left
-    return isinstance(left, BinOp) and any(node.op in chain and left.op in chain for chain in _CHAINS)
 
 
 def _is_function(word: str) -> bool:
