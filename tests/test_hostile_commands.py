@@ -156,17 +156,61 @@ def test_the_api_s_solving_calls_raise_the_same_located_error(tmp_path, call):
     assert "M is singular at every state: its row for dot(y) is zero" in str(raised.value)
 
 
+_KINKS = {  # a place the equations differentiate → (its lines, the kinked call's line and column)
+    "position": ('bodies:\n  b: {mass: m, position: [x, "y + @(x)"]}\n', 6, 35),
+    "potential": ("bodies:\n  b: {mass: m, position: [x, y]}\npotential: k*x*@(x)\n", 7, 16),
+    "constraint": ("bodies:\n  b: {mass: m, position: [x, y]}\nconstraints:\n  - dy - @(x)*dx\n", 8, 10),
+    "rate in a constraint": ("bodies:\n  b: {mass: m, position: [x, y]}\nconstraints:\n  - dot(y) - @(dot(x))\n",
+                             8, 14),
+    "quasi-coordinate": ("quasi_coordinates:\n  w: dx + @(y)*dy\nindependent: [w, y]\n"
+                         "bodies:\n  b: {mass: m, position: [x, y]}\n", 6, 11),
+    "frame angle": ("frames:\n  A: {rotations: [[z, \"@(x)\"]]}\n"
+                    "bodies:\n  b: {mass: m, frame: A, inertia: [1, 1, 1], position: [x, y]}\n", 6, 24),
+    "function value": ("functions:\n  f: {value: \"@(sin(t))\"}\nbodies:\n  b: {mass: m, position: [x, y*f]}\n",
+                       6, 15),
+}
+
+
 @pytest.mark.parametrize("args", [["derive"], ["derive", "--format", "python"], ["check"], ["verify"],
                                   ["linearize"], ["steady"], ["integrals"]], ids=" ".join)
-@pytest.mark.parametrize("function", ["abs", "sign"])
-def test_abs_or_sign_of_a_coordinate_in_a_position_is_one_located_error(tmp_path, args, function):
-    """Its second derivative is a DiracDelta: tracebacks in linearize, steady, integrals and verify,
-    an unlocated error in the code formats, DiracDelta(x) printed in text (a reviewer's file)."""
+@pytest.mark.parametrize("place", _KINKS)
+def test_sign_of_what_moves_where_it_is_differentiated_is_one_located_error(tmp_path, args, place):
+    """Its derivative is a DiracDelta: tracebacks in linearize, steady, integrals and verify, an
+    unlocated error in the code formats, DiracDelta(x) printed in text (reviewers' files)."""
+    lines, line, column = _KINKS[place]
     path = tmp_path / "kink.yaml"
-    path.write_text("gacli: 1\nname: kink\nparameters: {m: {value: 1}}\ncoordinates: [x, y]\n"
-                    f"bodies:\n  b: {{mass: m, position: [x, \"y + {function}(x)\"]}}\n", encoding="utf-8")
+    path.write_text("gacli: 1\nname: kink\nparameters: {m: {value: 1}, k: {value: 2}}\ncoordinates: [x, y]\n"
+                    + lines.replace("@", "sign"), encoding="utf-8")
     result = CliRunner().invoke(app, [*args, str(path)])
     assert result.exit_code == 1, result.output
-    assert f"{path}:6:26: error: bodies.b.position: {function}() of a coordinate in a position has no " \
-           "acceleration" in result.output
-    assert "Traceback" not in result.output and "DiracDelta" not in result.output
+    assert f"{path}:{line}:{column}: error: " in result.output
+    assert "sign() of something that moves" in result.output
+    assert "Traceback" not in result.output and "DiracDelta(" not in result.output
+
+
+@pytest.mark.parametrize("place", ["position", "frame angle", "function value"])
+def test_abs_of_what_moves_in_a_position_is_refused_and_elsewhere_taken(tmp_path, place):
+    lines, line, column = _KINKS[place]
+    path = tmp_path / "kink.yaml"
+    path.write_text("gacli: 1\nname: kink\nparameters: {m: {value: 1}, k: {value: 2}}\ncoordinates: [x, y]\n"
+                    + lines.replace("@", "abs"), encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1 and f"{path}:{line}:{column}: error: " in result.output, result.output
+    assert "abs() of something that moves" in result.output
+
+
+def test_abs_in_a_potential_and_sign_in_a_force_are_taken(tmp_path):
+    """Differentiated once (a potential) or never (work), abs and sign give no impulse: V = k|x| is
+    a V-shaped well whose force -k sign(x) the equations hold; dry friction stays."""
+    path = tmp_path / "well.yaml"
+    path.write_text("gacli: 1\nname: well\nparameters: {m: {value: 1}, k: {value: 2}, mu: {value: 1}}\n"
+                    "coordinates: [x]\nbodies:\n  b: {mass: m, position: [x, 0]}\npotential: k*abs(x)\n"
+                    "work: -mu*sign(dot(x))*dx\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["derive", "--format", "python", str(path), "--output", "-"])
+    assert result.exit_code == 0, result.output
+    namespace: dict = {}
+    exec(result.output, namespace)  # noqa: S102 - our own generated code
+    p = [namespace["DEFAULTS"][name] for name in namespace["PARAMETERS"]]
+    for x, v in [(0.7, 0.3), (-0.4, 0.9), (0.2, -1.1), (-1.5, -0.2)]:
+        acceleration = namespace["rhs"](0.0, [x, v], p)[1]
+        assert acceleration == pytest.approx((-2 * (1 if x > 0 else -1) - (1 if v > 0 else -1)) / 1)

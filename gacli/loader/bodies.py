@@ -10,7 +10,6 @@ from __future__ import annotations
 import sympy as sp
 
 from gacli.algebra import symbols as S
-from gacli.algebra.graph import postorder
 from gacli.loader import frames as F
 from gacli.read.expr.build import Scope
 from gacli.model import Body, Force, Form, Torque
@@ -158,12 +157,6 @@ class Geometry:
             if inertia is None or rotation is None:
                 return None
         if mass is None or position is None:
-            return None
-        if kink := _kinked(position, {S.value(c.name) for c in self.decl.of_kind("coordinate")}):
-            # d²/dt² of |x| is 2 δ(x) ẋ²: no acceleration is defined where x = 0, nor printable anywhere.
-            self.error(decl.position.node if decl.position is not None else decl.node, f"{where}.position",
-                       f"{kink}() of a coordinate in a position has no acceleration where its argument is 0",
-                       "write the position as a smooth expression: abs(x) as sqrt(x**2 + eps**2), or split the motion")
             return None
         return Body(decl.name, self.where_of(decl.node), mass, position, inertia, rotation, decl.description)
 
@@ -325,11 +318,3 @@ class Geometry:
         if node.text not in declared and node.text not in self._point_decls:  # a declared point's errors are its own
             self.error(node, where, f"'{node.text}' is not a body", did_you_mean(node.text, declared))
         return None
-
-
-def _kinked(position, coordinates: set) -> str:
-    """The grammar's name of abs() or sign() taken of a coordinate in ``position``; "" when none is."""
-    for node in postorder(list(position)):
-        if isinstance(node, (sp.Abs, sp.sign)) and node.free_symbols & coordinates:
-            return "abs" if isinstance(node, sp.Abs) else "sign"
-    return ""

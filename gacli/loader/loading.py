@@ -17,7 +17,9 @@ import sympy as sp
 
 from gacli.loader.contact import RollingContacts
 from gacli.loader.bodies import Geometry
+from gacli.loader import kinks
 from gacli.loader.inertia import MovedInertia
+from gacli.loader.kinks import kink
 from gacli.loader.lines import Lines
 from gacli.loader.forms import Forms
 from gacli.loader.frame_records import frame_model
@@ -123,22 +125,41 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
     def where_of(self, node) -> Location:
         return self.source.location(node)
 
-    def expression(self, text: Scalar | None, where: str, scope: Scope, start: int = 0, stop: int | None = None):
-        """Parse and build text[start:stop]; None (and a diagnostic) on error."""
+    def expression(self, text: Scalar | None, where: str, scope: Scope, start: int = 0, stop: int | None = None,
+                   times: int | None = None):
+        """Parse and build text[start:stop]; None (and a diagnostic) on error. ``times``: how often the
+        equations differentiate it (gacli.loader.kinks); by default, what the scope's places are."""
         if text is None:
             return None
         piece = text.text[start:stop]
         try:
-            expr = build(parse(piece), scope)
+            tree = parse(piece)
+            expr = build(tree, scope)
         except ParseError as exc:
             self.error(text, where, exc.message, offset=start + exc.pos)
         except BuildError as exc:
             self.error(text, where, exc.message, exc.hint, offset=start + exc.pos)
         else:
-            if not (problem := imaginary_problem(expr, self.known)):
+            times = self._differentiated(scope) if times is None else times
+            if call := kink(tree, times, lambda node: bool(build(node, scope).free_symbols - self._constants)):
+                self.error(text, where, kinks.message(call, times), kinks.hint(call, times), offset=start + call.pos)
+            elif not (problem := imaginary_problem(expr, self.known)):
                 return expr
-            self.error(text, where, problem, offset=start)
+            else:
+                self.error(text, where, problem, offset=start)
         return None
+
+    def _differentiated(self, scope: Scope) -> int:
+        """How often the equations differentiate an expression of ``scope``'s places: positions, angles
+        and points twice; forms and constraints once; constants, loads and work never."""
+        scopes = getattr(self, "scopes", None)
+        if scopes is None:
+            return 0
+        return {id(scopes.config): 2, id(scopes.form): 1, id(scopes.constraint): 1}.get(id(scope), 0)
+
+    @property
+    def _constants(self) -> set:
+        return {S.value(p.name) for p in self.decl.of_kind("parameter")}
 
     def system(self) -> System:
         system = self._system()
@@ -180,7 +201,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
         work = self._form(self.decl.work, "work", self.scopes.work) if self.decl.work else None
         if work is not None and work.dt != 0:
             self.error(self.decl.work, "work", "virtual work has no dt term (δt = 0 in a virtual displacement)")
-        potential = self.expression(self.decl.potential, "potential", self.scopes.config) if self.decl.potential else None
+        potential = self.expression(self.decl.potential, "potential", self.scopes.config, times=1) if self.decl.potential else None
         springs, dampers, lines = self._line_loads(bodies)
         own = {"potential": as_expr(potential if potential is not None else 0), "work": work}
         potential = springs + (potential if potential is not None else 0)
@@ -263,7 +284,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
                       refusals={n: "a function's value depends on t and parameters only" for n in self._all_names()})
         out = []
         for sym in self.decl.of_kind("function"):
-            value = self.expression(sym.value, f"functions.{sym.name}.value", scope)
+            value = self.expression(sym.value, f"functions.{sym.name}.value", scope, times=2)
             out.append(Function(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))
         return tuple(out)
 
