@@ -228,3 +228,28 @@ def test_a_loops_dependent_rate_over_a_sine_is_one_quotient_of_sines():
     solved = -u * l1 * (sp.sin(q1 - q2) * sp.cos(q2 - q3) / sp.sin(q2 - q3) + sp.cos(q1 - q2)) / l2
     shown = Tidy()(solved)
     assert shown == -u * l1 * sp.sin(q1 - q3) / (l2 * sp.sin(q2 - q3))
+
+
+def test_eulers_number_prints_in_the_file_s_grammar_beside_a_parameter_named_e(tmp_path):
+    """SymPy's 'E' read back as the parameter E, a different equation: the text prints exp(1)."""
+    from gacli.read.expr.build import Scope, build
+    from gacli.read.expr.parser import parse
+
+    path = tmp_path / "eul.yaml"
+    path.write_text("gacli: 1\nname: eul\nparameters: [m, E, e]\ncoordinates: [x]\n"
+                    "bodies: {b: {mass: m, position: [x, 0, 0]}}\n"
+                    "potential: E*x**2/2 + exp(1)*e*x + exp(x/2)\n", encoding="utf-8")
+    line = next(s for s in _printed(path).splitlines() if "dG/d(ddot(x))" in s)
+    right = line.split(" = ", 1)[1]
+    x, m, E, e = sp.symbols("x m E e")
+    scope = Scope({"x": x, "m": m, "E": E, "e": e})
+    assert sp.simplify(build(parse(right), scope) + E * x + sp.E * e + sp.exp(x / 2) / 2) == 0
+
+
+def test_eulers_number_is_upright_in_latex_beside_a_parameter_named_e():
+    from gacli.emit.latex_printer import GacliLatexPrinter
+
+    x, e = sp.symbols("x e")
+    printer = GacliLatexPrinter()
+    assert printer.doprint(sp.E * e) in (r"\mathrm{e} e", r"e \mathrm{e}")
+    assert printer.doprint(e * sp.exp(x)) == r"e \mathrm{e}^{x}"

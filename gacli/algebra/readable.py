@@ -285,6 +285,10 @@ class _FilePrinter(StrPrinter):
     def _print_Abs(self, expr) -> str:
         return f"abs({self._print(expr.args[0])})"
 
+    def _print_Exp1(self, expr) -> str:
+        # Not SymPy's 'E': the grammar has no such constant, and a parameter may be named E.
+        return "exp(1)"
+
     # The sign order a textbook uses (:func:`positive_first`, :func:`oriented`), as LaTeX has it too.
     def _as_ordered_terms(self, expr, order=None):
         return positive_first(super()._as_ordered_terms(expr, order=order))

@@ -87,6 +87,15 @@ class GacliLatexPrinter(LatexPrinter):
         super().__init__(settings)
         self._names = dict(names or {})
 
+    # Euler's number upright, as ISO 80000-2 sets it: an italic e is a parameter's (an ellipse's e).
+    # (E's own _latex method answers before any _print_Exp1 would.)
+    def _print(self, expr, **kwargs) -> str:
+        return r"\mathrm{e}" if expr is sp.S.Exp1 else super()._print(expr, **kwargs)
+
+    def _print_ExpBase(self, expr, exp=None) -> str:
+        tex = r"\mathrm{e}^{%s}" % self._print(expr.args[0])
+        return self._do_exponent(tex, exp)
+
     def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
         if expr in self._settings["symbol_names"]:
             return self._settings["symbol_names"][expr]
