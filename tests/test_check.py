@@ -231,6 +231,25 @@ def test_positive_definiteness_needs_every_parameter_value(tmp_path):
     assert report.mass_matrix.symmetric is True
 
 
+def test_masses_twelve_decades_apart_are_positive_definite(tmp_path):
+    """A satellite's 5e6 beside a wheel's 2e-6: definite whatever the units (generated code's Cholesky
+    solves it); a test relative to the largest entry called it not positive definite."""
+    path = write(tmp_path, "stiff.yaml", "gacli: 1\nname: stiff\nparameters: {m1: {value: 5e6}, m2: {value: 2e-6}}\n"
+                 "coordinates: [x, y]\nbodies:\n  a: {mass: m1, position: [x, 0]}\n  b: {mass: m2, position: [0, y]}\n")
+    report = check_file(path)
+    assert report.errors == () and report.mass_matrix.positive_definite is True
+
+
+@pytest.mark.parametrize("written, value", [("1", 1), ("5e6", 5e6), ("-2.5", -2.5), (".5", 0.5)])
+def test_a_number_written_for_a_parameter_is_its_value(tmp_path, written, value):
+    path = write(tmp_path, "short.yaml", GOOD.replace("m: {value: 1}", f"m: {written}").replace(
+        "l: {value: 2}", "l: length of the rod"))
+    system = load(path)
+    by_name = {p.name: p for p in system.parameters}
+    assert float(by_name["m"].value) == value and by_name["m"].description == ""
+    assert by_name["l"].value is None and by_name["l"].description == "length of the rod"
+
+
 def test_the_shipped_systems_have_symmetric_positive_definite_M():
     for path in sorted(SYSTEMS.glob("*.yaml")):
         report = check_file(path)

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import keyword
+import re
 
 from gacli.read.reader import Reader, describe
 from gacli.read.schema import (
@@ -19,6 +20,9 @@ from gacli.read.schema import (
 from gacli.read.source import Mapping, Node, Scalar, Sequence
 from gacli.read.texsafe import MAX_LENGTH as LATEX_MAX_LENGTH
 from gacli.read.texsafe import check_math
+
+
+_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
 
 
 def read_symbols(reader: Reader, top: dict) -> tuple[SymbolDecl, ...]:
@@ -65,6 +69,9 @@ def _symbol_entry(reader: Reader, kind: str, key: Scalar, value: Node, where: st
             return SymbolDecl(kind, key.text, key)
         if kind == "quasi":
             return SymbolDecl(kind, key.text, key, differential=reader.expression(value, where))
+        if kind in ("parameter", "function") and (value.kind in ("int", "float") or _NUMBER.match(value.text)):
+            # `m: 1` or `J: 5e6` means that value (no one describes a mass as "1"); text stays a description.
+            return SymbolDecl(kind, key.text, key, value=reader.expression(value, f"{where}.value"))
         return SymbolDecl(kind, key.text, key, description=value.text)
     allowed = QUASI_KEYS if kind == "quasi" else SYMBOL_KEYS
     if kind in ("input", "coordinate"):
