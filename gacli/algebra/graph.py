@@ -189,23 +189,38 @@ def substitute(exprs: Sequence[sp.Basic], mapping: Mapping[sp.Basic, sp.Basic],
 
 
 def expanded_terms(expr: sp.Expr, limit: int) -> int:
-    """How many terms ``expand(expr)`` would have, counted without expanding (stops past ``limit``)."""
+    """How many terms ``expand(expr)`` would have, counted without expanding (stops past ``limit``).
+
+    SymPy's expand is deep: it multiplies out inside a root or a sine too, so a function whose
+    argument would pass ``limit`` counts as past it (√((x + y + z)¹⁰⁰ + 1) is one term, and its
+    expansion took minutes). Each distinct subexpression is counted once."""
+    return _expanded_terms(expr, limit, {})
+
+
+def _expanded_terms(expr: sp.Expr, limit: int, memo: dict) -> int:
+    known = memo.get(expr)
+    if known is None:
+        known = memo[expr] = _expanded_terms_new(expr, limit, memo)
+    return known
+
+
+def _expanded_terms_new(expr: sp.Expr, limit: int, memo: dict) -> int:
     if expr.is_Add:
         total = 0
         for term in expr.args:
-            total += expanded_terms(term, limit)
+            total += _expanded_terms(term, limit, memo)
             if total > limit:
                 break
         return total
     if expr.is_Mul:
         total = 1
         for factor in expr.args:
-            total *= expanded_terms(factor, limit)
+            total *= _expanded_terms(factor, limit, memo)
             if total > limit:
                 break
         return total
     if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0 and expr.base.is_Add:
-        k = expanded_terms(expr.base, limit)
+        k = _expanded_terms(expr.base, limit, memo)
         n = int(expr.exp)
         # The multinomial count C(n + k − 1, k − 1), stopped as soon as it passes the limit.
         total = 1
@@ -214,7 +229,8 @@ def expanded_terms(expr: sp.Expr, limit: int) -> int:
             if total > limit:
                 break
         return total
-    return 1
+    inside = (_expanded_terms(a, limit, memo) for a in expr.args if isinstance(a, sp.Expr))
+    return limit + 1 if any(n > limit for n in inside) else 1
 
 
 def operations(exprs: Iterable[sp.Basic]) -> int:

@@ -15,12 +15,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli.algebra.graph import trees_within
+from gacli.algebra.graph import expanded_terms, trees_within
 from gacli.algebra.turn_products import PRODUCTS_NODES, TRIG_FACTORS, NotTurned, products
 
 # Tree nodes of what SymPy's expand rewrites, at most (trig factors in one product: TRIG_FACTORS, as
 # turn_products reads them): the terms of a product of k sums of two double each time.
 TURNED_NODES = 2_000
+# Terms of that expansion, at most.
+TURNED_TERMS = 2_000
 
 
 def turns(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | None:
@@ -39,9 +41,14 @@ def _expanded(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | 
     """:func:`turns` by SymPy's expand of the exponentials (any offset in the angles)."""
     w = [sp.Symbol(f"_w_{q}") for q in angles]
     try:
-        written = sp.expand(_exponentials(sp.S(expr), angles, w))
+        exponentials = _exponentials(sp.S(expr), angles, w)
     except NotTurned:
         return None
+    # Counted before SymPy's expand forms them: (x + y + z)**100 is a tree of six nodes and 5,151
+    # terms, and its expansion took minutes and gigabytes.
+    if expanded_terms(exponentials, TURNED_TERMS) > TURNED_TERMS:
+        return None
+    written = sp.expand(exponentials)
     out: dict[tuple, sp.Expr] = {}
     for term in sp.Add.make_args(written):
         powers = term.as_powers_dict()

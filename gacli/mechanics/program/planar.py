@@ -135,7 +135,7 @@ def _terms(position, coordinates: set) -> list[tuple[sp.Expr, tuple]] | None:
         return None
     order = sorted(coordinates, key=str)
     parts = T.turns(x + sp.I * y, order)
-    if parts is None:
+    if parts is None or len(parts) > _MOST_TURNS_PER_SINE * _sines(x, y) + 1:
         return None
     offsets = _offsets([x, y], order)
     out = []
@@ -149,6 +149,17 @@ def _terms(position, coordinates: set) -> list[tuple[sp.Expr, tuple]] | None:
     if z != 0 and not any(phi == 0 for phi, _ in out):
         out.insert(0, (sp.S.Zero, (sp.S.Zero, sp.S.Zero, z)))
     return out or [(sp.S.Zero, (sp.S.Zero, sp.S.Zero, sp.S.Zero))]
+
+
+# A chain's written-out position has a turn per link, a product cos q1 cos q2 two, cos³ q four: a
+# position with many more turns than sines and cosines (a power, (sin x + cos y)**20: 441 turns, one
+# frame each) is not a chain, and reading it as one costs what its expansion costs, not the system.
+_MOST_TURNS_PER_SINE = 4
+
+
+def _sines(*components) -> int:
+    """The sines and cosines written in ``components`` (a tree count, as the file wrote them)."""
+    return sum(isinstance(f, (sp.sin, sp.cos)) for c in components for f in sp.preorder_traversal(c))
 
 
 def _offsets(components: list, order: list) -> dict[tuple, sp.Expr]:
