@@ -27,6 +27,7 @@ from sympy.printing.str import StrPrinter
 from gacli.algebra import trig
 from gacli.algebra.angle_sums import angle_sums_compacted
 from gacli.algebra.angles import relative
+from gacli.algebra.coefficients import small_or_whole
 from gacli.algebra.signs import with_signs
 from gacli.algebra.symbols import RATE_NAME
 from gacli.algebra.terms import factor_terms
@@ -94,7 +95,7 @@ class Tidy:
         is small (counted first); the caller keeps it when it prints shorter.
         """
         rates = sorted((s for s in expr.free_symbols if RATE_NAME.match(s.name)), key=sp.default_sort_key)
-        if not rates or not _expands_small(expr, COLLECT_TERMS) or not trig.small_or_whole(expr):
+        if not rates or not _expands_small(expr, COLLECT_TERMS) or not small_or_whole(expr):
             return None
         groups: dict[sp.Expr, list[sp.Expr]] = {}
         for term in sp.Add.make_args(sp.expand(expr)):

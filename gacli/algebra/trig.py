@@ -11,13 +11,13 @@ of a sum (θ + δ) beside one of its angles alone is first written out (:mod:`ga
 
 from __future__ import annotations
 
-import functools
 import math
 
 import sympy as sp
 
 from gacli.algebra import angle_sums
-from gacli.algebra.graph import expanded_terms, postorder, substitute, trees_within
+from gacli.algebra.coefficients import multiplied_out
+from gacli.algebra.graph import postorder, substitute
 
 
 # Terms of the distributed polynomial past which the reduction is not tried:
@@ -30,9 +30,6 @@ MAX_WORK = 2_000
 # Terms formed by one elimination of an angle's squares, past which it stops.
 ELIMINATED_TERMS = 4 * MAX_TERMS
 _WORK = object()  # the memo's key for the work done so far
-# A coefficient is multiplied out to see whether it cancels only below this many terms.
-COEFFICIENT_TERMS = 400
-COEFFICIENT_NODES = 1_000
 # Distinct subexpressions past which an expression is not even looked at.
 MAX_NODES = 20_000
 
@@ -366,34 +363,10 @@ def _summed(poly: Poly, multiply_out: bool = False) -> Poly:
     for monomial, terms in poly.items():
         total = sp.Add(*terms)
         if multiply_out:
-            total = _coefficient(total)
+            total = multiplied_out(total)
         if total != 0:
             out[monomial] = [total]
     return out
-
-
-@functools.lru_cache(maxsize=8192)  # the same coefficients are rebuilt again by every later reduction of a tidy
-def _coefficient(total: sp.Expr) -> sp.Expr:
-    """A coefficient multiplied out where that is shorter (sums of rates that cancel only so; a sum
-    of parameters, m₁ + m₂, stays whole where it would lengthen), and only where a term has a sum
-    to open: a loop's monomials over its dead point stay as many terms."""
-    if not total.is_Add or not any(map(_distributes, total.args)) or \
-            expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS or not small_or_whole(total):
-        return total
-    expanded = sp.expand(total, power_base=False, power_exp=False, log=False)  # products and powers of sums alone
-    return expanded if len(sp.Add.make_args(expanded)) < len(total.args) else total
-
-
-def small_or_whole(total: sp.Expr) -> bool:
-    """Small, or no quotient by a sum: the term count sees one as a factor, and expand of a Chaplygin
-    ball's force (14 terms, 1,877 nodes, 50 such quotients) ran for minutes."""
-    return trees_within([total], COEFFICIENT_NODES) or not any(
-        n.is_Pow and n.exp.is_negative and n.base.is_Add for n in postorder([total]))
-
-
-def _distributes(term: sp.Expr) -> bool:
-    """Whether a term has a sum, or a positive power of one, among its factors."""
-    return any((f.base if f.is_Pow and f.exp.is_positive else f).is_Add for f in sp.Mul.make_args(term))
 
 
 def _size(poly: Poly) -> tuple[int, int]:
