@@ -171,3 +171,29 @@ def test_a_large_multiple_of_an_angle_is_not_written_out():
     assert angle_sums.expansions(big.atoms(sp.sin, sp.cos)) == {}
     assert trig.reduce(big * sp.sin(a), cancel=True).has(sp.sin(a + 100000 * b))
     assert angle_sums.expansions({sp.sin(a - 2 * b), sp.sin(b)})
+
+
+@pytest.mark.parametrize("n", [2, 3, 9, 40])
+def test_a_high_power_of_a_sine_is_eliminated_by_the_binomial_theorem(n):
+    # One square at a time made 2**(n/2) monomials (sin(x)**40: 3.4 s); the binomial theorem makes
+    # n/2 + 1, equal to the power at random angles.
+    poly = {frozenset({(sp.sin(a), n), (sp.cos(b), 1)}): [m]}
+    out = trig._eliminate(poly, a, sp.sin)
+    assert len(out) == n // 2 + 1
+    rebuilt = sp.Add(*(c[0] * sp.Mul(*(base ** e for base, e in monomial)) for monomial, c in out.items()))
+    s = sp.Symbol("s")  # exactly: cos² a = 1 − sin² a (floats lose (1 − c²)^20 to cancellation)
+    on_circle = rebuilt.xreplace({sp.sin(a): s, sp.cos(a): sp.sqrt(1 - s ** 2)})
+    assert sp.expand(on_circle - m * s ** n * sp.cos(b)) == 0
+
+
+def test_an_elimination_past_its_bound_is_not_formed():
+    poly = {frozenset({(sp.sin(a), 2 * trig.ELIMINATED_TERMS),}): [m]}
+    assert trig._eliminate(poly, a, sp.sin) is None
+    assert trig.reduce(m * sp.sin(a) ** (2 * trig.ELIMINATED_TERMS) + m) is not None
+
+
+def test_expand_is_counted_inside_functions_as_it_runs_there():
+    x, y, z = sp.symbols("x y z")
+    assert expanded_terms((x + y + z) ** 100, 2_000) > 2_000
+    assert expanded_terms(sp.sqrt((x + y + z) ** 100 + 1), 2_000) > 2_000
+    assert expanded_terms(sp.sin((x + y) ** 3) * (x + y), 2_000) == 2
