@@ -197,3 +197,11 @@ def test_expand_is_counted_inside_functions_as_it_runs_there():
     assert expanded_terms((x + y + z) ** 100, 2_000) > 2_000
     assert expanded_terms(sp.sqrt((x + y + z) ** 100 + 1), 2_000) > 2_000
     assert expanded_terms(sp.sin((x + y) ** 3) * (x + y), 2_000) == 2
+
+
+def test_a_negative_power_is_kept_by_the_elimination():
+    # divmod(-2, 2) is (-1, 0): a quotient's 1/sin² a was dropped (a sleigh's equations lost a term).
+    poly = {frozenset({(sp.sin(a), -2)}): [m], frozenset({(sp.sin(a), 3)}): [r]}
+    out = trig._eliminate(poly, a, sp.sin)
+    assert out[frozenset({(sp.sin(a), -2)})] == [m]
+    assert trig.reduce(m / sp.sin(a) ** 2 + r * sp.sin(a) ** 2 + r * sp.cos(a) ** 2) == m / sp.sin(a) ** 2 + r

@@ -343,7 +343,7 @@ def _eliminate(poly: Poly, angle: sp.Expr, kind: type) -> Poly | None:
     for monomial, coefficient in poly.items():
         powers = dict(monomial)
         k, r = divmod(powers.get(f, 0), 2)
-        if k == 0:
+        if k <= 0:  # f or 1/f² (a quotient's power) as it is
             _merge(out, {monomial: coefficient})
             continue
         formed += (k + 1) * len(coefficient)
