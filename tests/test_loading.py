@@ -284,3 +284,22 @@ bodies:
         loads(text, "c.yaml")
     with pytest.raises(SystemFileError, match=r"unknown key 'valu' \(did you mean 'value'\?\)"):
         loads(text.replace("{value: 0.3,", "{valu: 0.3,"), "c.yaml")
+
+
+def test_a_missing_file_is_said_to_be_missing(tmp_path):
+    with pytest.raises(SystemFileError) as info:
+        load(tmp_path / "missing.yaml")
+    assert str(info.value).endswith("error: no such file")
+
+
+def test_a_greek_letter_for_a_name_is_told_how_to_print_it():
+    with pytest.raises(SystemFileError) as info:
+        loads("gacli: 1\nname: g\ncoordinates: [\u03b8]\nparameters: [m]\nbodies: {p: {mass: m, position: [x, 0]}}\n")
+    assert "'\u03b8' is not a valid name" in str(info.value) and "latex: \\theta" in str(info.value)
+
+
+def test_a_parameter_that_is_its_own_value_is_told_so():
+    with pytest.raises(SystemFileError) as info:
+        loads("gacli: 1\nname: g\ncoordinates: [x]\nparameters: {m: {value: 2*m}}\n"
+              "bodies: {p: {mass: m, position: [x, 0]}}\n")
+    assert "'m' cannot be its own value" in str(info.value) and "did you mean" not in str(info.value)

@@ -258,7 +258,8 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
             if sym.value is not None:
                 refusals = dict(refused)
                 if counts[sym.name] == 1:  # a duplicate's twin stays refused
-                    del refusals[sym.name]
+                    refusals[sym.name] = f"'{sym.name}' cannot be its own value: a value is a number or an " \
+                                         "expression in parameters declared before it"
                 scope = Scope(values=dict(earlier), declared=declared, refusals=refusals)
                 value = self.expression(sym.value, f"parameters.{sym.name}.value", scope)
             out.append(Parameter(sym.name, self.where_of(sym.node), sym.description, sym.unit, sym.latex, value))

@@ -108,10 +108,17 @@ class Reader:
             self.error(node, where, f"expected a name, found {describe(node)}")
             return None
         if not IDENTIFIER.match(node.text):
-            self.error(node, where, f"'{node.text}' is not a valid name",
-                       "a name is a letter or '_' followed by letters, digits and '_'")
+            self.error(node, where, f"'{node.text}' is not a valid name", _name_hint(node.text))
             return None
         return node.text
+
+
+def _name_hint(text: str) -> str:
+    rule = "a name is an ASCII letter or '_' followed by ASCII letters, digits and '_'"
+    if any(ord(ch) > 127 for ch in text):
+        # θ is a letter to a reader and to Python, not to the grammar: expressions are ASCII.
+        return rule + "; spell a Greek letter out (theta) and give it `latex: \\theta` for print"
+    return rule
 
 
 def _split(key: Scalar, value: Node) -> str:

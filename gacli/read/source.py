@@ -117,6 +117,8 @@ def read_source(path: str | Path) -> SourceFile:
     """Read and compose a system file; every failure is a located SystemFileError."""
     name = str(path)
     try:
+        if not Path(path).exists():
+            raise _fail(name, "no such file")
         if not Path(path).is_file():
             raise _fail(name, "not a regular file")
         # Read one byte past the limit rather than trusting the size: the
