@@ -11,6 +11,8 @@ back up here.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from gacli import notebook  # noqa: F401  (on import, Derivation gets _repr_latex_)
 from gacli.emit import derived, emit
 from gacli.mechanics import equations
@@ -25,6 +27,10 @@ def derive(system, *, progress=None) -> Derivation:
     (the steps: :func:`gacli.mechanics.equations.derive`)."""
     if isinstance(system, System):
         return equations.derive(system, progress=progress)
+    if isinstance(system, (str, Path)):  # loaded here, so that its steps reach ``progress`` too
+        from gacli.loader.loading import load
+
+        return equations.derive(load(system), progress=progress)
     return derived(system)
 
 

@@ -39,3 +39,11 @@ def test_derive_and_emit_take_a_path_or_a_system_as_a_notebook_writes_them():
     assert gacli.emit(gacli.load(path), "c") == gacli.emit(by_system, "c") == gacli.emit(path, "c")
     with pytest.raises(TypeError, match="a System \\(gacli.load\\) or a path; got int"):
         gacli.emit(3, "c")
+
+
+def test_derive_from_a_path_reports_its_steps_to_progress():
+    import gacli
+
+    seen: list[str] = []
+    gacli.derive(str(SYSTEMS / "rolling_disk.yaml"), progress=seen.append)
+    assert seen and any("14.19" in step for step in seen)
