@@ -68,7 +68,8 @@ def test_steady_command_formats():
     assert "dot(theta) = 0" in text.output and "x, y, theta" in text.output
     data = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "json"])
     assert json.loads(data.output)["families"] == [
-        {"values": {"dot(theta)": "0"}, "free": ["dot(s)"], "relations": [], "conditions_nonzero": []}]
+        {"values": {"dot(theta)": "0"}, "free": ["dot(s)"], "relations": [], "conditions_nonzero": [],
+         "real_at_file_values": True}]
     bad = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "html"])
     assert bad.exit_code == 2
 
@@ -101,3 +102,28 @@ def test_a_four_bar_s_equilibria_are_a_relation_not_a_solve_without_end():
     # others) simplified for minutes: steady ran to its budget on a shipped system.
     found = steady_motions(derived("four_bar_linkage"))
     assert found.families
+
+
+def test_a_family_is_not_listed_again_as_its_own_special_case_and_unreal_ones_are_said_so():
+    """Chaplygin's ball (A < B < C): at rest with θ and ψ free was listed again with ψ = asin(...)
+    fixed, and ψ = asin(√((C − B)/(A − B))) = asin(√−2) was printed as a steady motion without a word."""
+    from gacli.steady.motions import steady_motions
+
+    import gacli
+
+    d = gacli.derive(str(SYSTEMS / "chaplygin_ball.yaml"))
+    families = steady_motions(d).families
+    for f in families:
+        for g in families:
+            assert f is g or not (set(g.values) <= set(f.values) and set(g.relations) <= set(f.relations)
+                                  and not g.conditions), (f, g)
+    from gacli.algebra import symbols as S
+
+    A, B, C = (S.value(n) for n in "ABC")
+    at = {A: 0.002, B: 0.003, C: 0.005}  # the file's values
+    for f in families:
+        imaginary = any(abs(complex(v.subs(at).subs({u: 0.4 for u in f.free}).evalf()).imag) > 1e-9 for _, v in f.values)
+        assert f.real is (not imaginary), f
+    assert any(f.real is False for f in families)
+    text = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_ball.yaml")]).output
+    assert text.count("not real at the file's parameter values") == sum(f.real is False for f in families)

@@ -17,7 +17,7 @@ that the family's values must satisfy.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -41,6 +41,9 @@ class Family:
     free: tuple[sp.Symbol, ...]
     relations: tuple[sp.Expr, ...]          # each = 0
     conditions: tuple[sp.Expr, ...]         # each ≠ 0
+    # False where a value is not real at the file's parameter values (and generic free values): a
+    # Chaplygin ball's ψ = asin(√((C − B)/(A − B))) with A < B < C; None when a parameter has none.
+    real: bool | None = None
 
 
 @dataclass(frozen=True)
@@ -57,7 +60,8 @@ def steady_motions(derivation: Derivation) -> SteadyMotions:
     from gacli.steady.manifold import reduce_state
 
     require_small(derivation, "steady")
-    reduction = reduce_state(derivation, parameter_defaults(derivation.system.parameters))
+    defaults = parameter_defaults(derivation.system.parameters)
+    reduction = reduce_state(derivation, defaults)
     kinematic = dict(derivation.kinematic_equations)
     no_inputs = {S.value(i.name): sp.S.Zero for i in derivation.system.inputs}
     # The equations do not depend on the ignorable coordinates (manifold.py): at zero, the terms that
@@ -67,7 +71,23 @@ def steady_motions(derivation: Derivation) -> SteadyMotions:
     unknowns = tuple(derivation.speeds) + tuple(S.value(c) for c in reduction.coordinates)
     out: list[Family] = []
     _branch([_readable(e.xreplace(no_inputs)) for e in equations], {}, [], unknowns, out, 0)
-    return SteadyMotions(unknowns, reduction.ignorable, tuple(_distinct(out, unknowns)))
+    at = {S.value(p.name): sp.Float(defaults[p.name]) for p in derivation.system.parameters if p.name in defaults}
+    complete = len(at) == len(derivation.system.parameters)
+    families = [replace(f, real=_real_at(f, at) if complete else None) for f in _distinct(out, unknowns)]
+    return SteadyMotions(unknowns, reduction.ignorable, tuple(families))
+
+
+def _real_at(family: Family, at: dict) -> bool | None:
+    """Whether the family's values are real at ``at`` (the parameters) and generic free values."""
+    generic = {u: sp.Float(0.3 + 0.17 * i) for i, u in enumerate(family.free)}
+    for _, value in family.values:
+        try:
+            number = complex(value.xreplace(at).xreplace(generic).evalf(15))
+        except (TypeError, ValueError, ArithmeticError):
+            return None
+        if abs(number.imag) > 1e-9 * max(1.0, abs(number.real)):
+            return False
+    return True
 
 
 def _branch(equations, values, conditions, unknowns, out, depth, seen=None) -> None:
@@ -183,11 +203,20 @@ def _family(values, relations, conditions, unknowns) -> Family | None:
 
 
 def _distinct(families, unknowns) -> list[Family]:
+    """Each family once, and none that is a special case of another: a Chaplygin ball at rest with
+    θ and ψ free was listed again with ψ = asin(...) fixed, four times."""
     out = []
     for f in families:
         if not any(g.values == f.values and g.relations == f.relations for g in out):
             out.append(f)
-    return out
+    return [f for f in out if not any(g is not f and _within(f, g) for g in out)]
+
+
+def _within(f: Family, g: Family) -> bool:
+    """Whether every motion of ``f`` is one of ``g``: g asks no condition, and its values and relations
+    are among f's (f fixes more)."""
+    return not g.conditions and set(g.values) < set(f.values) and set(g.relations) <= set(f.relations) or \
+        not g.conditions and set(g.values) <= set(f.values) and set(g.relations) < set(f.relations)
 
 
 def _vanishes(e: sp.Expr) -> bool:

@@ -25,6 +25,7 @@ def motions_text(result: SteadyMotions, fmt: str, system=None) -> str:
         lines += [f"  {show(k)} = {show(v)}" for k, v in family.values]
         lines += [f"  {show(r)} = 0" for r in family.relations]
         lines += [f"  where {show(c)} ≠ 0" for c in family.conditions]
+        lines += [f"  ({_UNREAL})"] if family.real is False else []
     if not result.families:
         lines.append("no steady motion found")
     return "\n".join(lines).lstrip("\n")
@@ -39,6 +40,7 @@ def _motions_latex(result: SteadyMotions, show) -> str:
         lines += ["", f"\\paragraph{{Family {i}}}" + (f" Free: ${free}$." if free else ""),
                   "\\begin{align*}", " \\\\\n".join(rows), "\\end{align*}"]
         lines += [f"where ${show(c)} \\neq 0$" for c in family.conditions]
+        lines += [f"({_UNREAL}.)"] if family.real is False else []
     return "\n".join(lines)
 
 
@@ -47,7 +49,11 @@ def _motions_data(result: SteadyMotions) -> dict:
             "families": [{"values": {str(k): str(v) for k, v in f.values},
                           "free": [str(u) for u in f.free],
                           "relations": [str(r) for r in f.relations],
-                          "conditions_nonzero": [str(c) for c in f.conditions]} for f in result.families]}
+                          "conditions_nonzero": [str(c) for c in f.conditions],
+                          "real_at_file_values": f.real} for f in result.families]}
+
+
+_UNREAL = "not real at the file's parameter values: a steady motion of other parameters"
 
 
 def integrals_text(result: Integrals, fmt: str, system=None) -> str:
