@@ -69,7 +69,7 @@ def test_steady_command_formats():
     data = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "json"])
     assert json.loads(data.output)["families"] == [
         {"values": {"dot(theta)": "0"}, "free": ["dot(s)"], "relations": [], "conditions_nonzero": [],
-         "real_at_file_values": True}]
+         "real_at_file_values": True, "not_at_constant_rates": []}]
     bad = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_sleigh.yaml"), "--format", "html"])
     assert bad.exit_code == 2
 
@@ -127,3 +127,26 @@ def test_a_family_is_not_listed_again_as_its_own_special_case_and_unreal_ones_ar
     assert any(f.real is False for f in families)
     text = CliRunner().invoke(app, ["steady", str(SYSTEMS / "chaplygin_ball.yaml")]).output
     assert text.count("not real at the file's parameter values") == sum(f.real is False for f in families)
+
+
+def test_coordinates_whose_rates_turn_are_not_said_to_move_at_constant_rates():
+    """The disk's x, y go round a circle along its circular motion (ẋ = ... cos(yaw)), not along
+    upright rolling; a satellite's e0..e3 turn as ė = ½ E(e) ω: all were 'moving at constant rates
+    along every family'. The sleigh's x, y do, since θ̇ = 0 along its one family."""
+    from gacli.steady.motions import steady_motions
+
+    import gacli
+
+    disk = steady_motions(gacli.derive(str(SYSTEMS / "rolling_disk.yaml")))
+    assert disk.steady_rates == ("yaw", "spin")
+    from gacli.algebra import symbols as S
+
+    for family in disk.families:
+        turning = dict(family.values).get(S.rate("yaw")) != 0
+        assert (family.drifting == ("x", "y")) == turning, family
+    sleigh = steady_motions(gacli.derive(str(SYSTEMS / "chaplygin_sleigh.yaml")))
+    assert sleigh.steady_rates == ("x", "y", "theta") and not sleigh.drifting
+    data = json.loads(CliRunner().invoke(app, ["steady", str(SYSTEMS / "satellite_reaction_wheels.yaml"),
+                                               "--format", "json"]).output)
+    assert all(f["not_at_constant_rates"] in ([], ["e0", "e1", "e2", "e3"]) for f in data["families"])
+    assert any(f["not_at_constant_rates"] for f in data["families"])

@@ -22,6 +22,7 @@ from dataclasses import dataclass, replace
 import sympy as sp
 
 from gacli.algebra import symbols as S
+from gacli.algebra.coerce import as_expr
 from gacli.mechanics.equations import Derivation
 
 _MAX_FAMILIES = 24
@@ -44,6 +45,9 @@ class Family:
     # False where a value is not real at the file's parameter values (and generic free values): a
     # Chaplygin ball's ψ = asin(√((C − B)/(A − B))) with A < B < C; None when a parameter has none.
     real: bool | None = None
+    # Ignorable coordinates whose rates turn along the family: free of M and F, but their kinematic
+    # equations hold another that moves (a disk's x, y with its yaw; Euler parameters, ė = ½ E(e) ω).
+    drifting: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -51,6 +55,16 @@ class SteadyMotions:
     unknowns: tuple[sp.Symbol, ...]
     ignorable: tuple[str, ...]
     families: tuple[Family, ...]
+
+    @property
+    def drifting(self) -> tuple[str, ...]:
+        """The ignorable coordinates that do not move at constant rates along some family."""
+        return tuple(c for c in self.ignorable if any(c in f.drifting for f in self.families))
+
+    @property
+    def steady_rates(self) -> tuple[str, ...]:
+        """The ignorable coordinates that move at constant rates along every family."""
+        return tuple(c for c in self.ignorable if c not in self.drifting)
 
 
 def steady_motions(derivation: Derivation) -> SteadyMotions:
@@ -73,8 +87,18 @@ def steady_motions(derivation: Derivation) -> SteadyMotions:
     _branch([_readable(e.xreplace(no_inputs)) for e in equations], {}, [], unknowns, out, 0)
     at = {S.value(p.name): sp.Float(defaults[p.name]) for p in derivation.system.parameters if p.name in defaults}
     complete = len(at) == len(derivation.system.parameters)
-    families = [replace(f, real=_real_at(f, at) if complete else None) for f in _distinct(out, unknowns)]
+    rates = {c: as_expr(kinematic.get(c, 0)) for c in reduction.ignorable}
+    families = [replace(f, real=_real_at(f, at) if complete else None, drifting=_drifting(f, rates))
+                for f in _distinct(out, unknowns)]
     return SteadyMotions(unknowns, reduction.ignorable, tuple(families))
+
+
+def _drifting(family: Family, rates: dict) -> tuple[str, ...]:
+    """The ignorable coordinates whose rates, with the family's values, hold one that moves."""
+    values = dict(family.values)
+    along = {c: rate.xreplace(values) for c, rate in rates.items()}
+    moving = {S.value(c) for c, rate in along.items() if not _vanishes(rate)}
+    return tuple(c for c, rate in along.items() if rate.free_symbols & moving)
 
 
 def _real_at(family: Family, at: dict) -> bool | None:

@@ -17,8 +17,8 @@ def motions_text(result: SteadyMotions, fmt: str, system=None) -> str:
         return _motions_latex(result, _latex(system))
     show = str
     lines = []
-    if result.ignorable:
-        lines.append(f"moving at constant rates along every family: {', '.join(result.ignorable)}")
+    if result.steady_rates:
+        lines.append(f"moving at constant rates along every family: {', '.join(result.steady_rates)}")
     for i, family in enumerate(result.families, 1):
         free = f" (free: {', '.join(show(u) for u in family.free)})" if family.free else ""
         lines += ["", f"family {i}{free}"]
@@ -26,6 +26,7 @@ def motions_text(result: SteadyMotions, fmt: str, system=None) -> str:
         lines += [f"  {show(r)} = 0" for r in family.relations]
         lines += [f"  where {show(c)} ≠ 0" for c in family.conditions]
         lines += [f"  ({_UNREAL})"] if family.real is False else []
+        lines += [f"  ({_DRIFTING}: {', '.join(family.drifting)})"] if family.drifting else []
     if not result.families:
         lines.append("no steady motion found")
     return "\n".join(lines).lstrip("\n")
@@ -33,7 +34,7 @@ def motions_text(result: SteadyMotions, fmt: str, system=None) -> str:
 
 def _motions_latex(result: SteadyMotions, show) -> str:
     """Each family as an align* block (amsmath), its free values and conditions in words around it."""
-    lines = [f"% moving at constant rates along every family: {', '.join(result.ignorable)}"]
+    lines = [f"% moving at constant rates along every family: {', '.join(result.steady_rates)}"]
     for i, family in enumerate(result.families, 1):
         free = ", ".join(show(u) for u in family.free)
         rows = [f"{show(k)} &= {show(v)}" for k, v in family.values] + [f"{show(r)} &= 0" for r in family.relations]
@@ -41,6 +42,7 @@ def _motions_latex(result: SteadyMotions, show) -> str:
                   "\\begin{align*}", " \\\\\n".join(rows), "\\end{align*}"]
         lines += [f"where ${show(c)} \\neq 0$" for c in family.conditions]
         lines += [f"({_UNREAL}.)"] if family.real is False else []
+        lines += [f"({_DRIFTING}: {', '.join(family.drifting)}.)"] if family.drifting else []
     return "\n".join(lines)
 
 
@@ -50,9 +52,11 @@ def _motions_data(result: SteadyMotions) -> dict:
                           "free": [str(u) for u in f.free],
                           "relations": [str(r) for r in f.relations],
                           "conditions_nonzero": [str(c) for c in f.conditions],
-                          "real_at_file_values": f.real} for f in result.families]}
+                          "real_at_file_values": f.real,
+                          "not_at_constant_rates": list(f.drifting)} for f in result.families]}
 
 
+_DRIFTING = "not at constant rates here, though free of the equations"
 _UNREAL = "not real at the file's parameter values: a steady motion of other parameters"
 
 
