@@ -11,9 +11,12 @@ from __future__ import annotations
 
 import functools
 
+import pytest
 import sympy as sp
+from typer.testing import CliRunner
 
 from conftest import derived
+from gacli.cli import app
 from gacli.steady.integrals import integrals
 
 
@@ -153,3 +156,36 @@ def test_an_integral_through_a_function_of_time_is_judged_with_its_rate():
     free = integrals(derive(loads(RING)), candidates=[p], search=False).candidates
     driven = integrals(derive(loads(RING + "work: m*R**2*dot(Omega)*dphi\n")), candidates=[p], search=False).candidates
     assert [c.conserved for c in free] == [True] and [c.conserved for c in driven] == [False]
+
+
+_FREE_QUATERNION_BODY = """\
+gacli: 1
+name: free_body
+parameters: {A: 1, B: 2, C: 3}
+coordinates: [e0, e1, e2, e3]
+quasi_coordinates:
+  w1: 2*(-e1*de0 + e0*de1 + e3*de2 - e2*de3)
+  w2: 2*(-e2*de0 - e3*de1 + e0*de2 + e1*de3)
+  w3: 2*(-e3*de0 + e2*de1 - e1*de2 + e0*de3)
+constraints:
+  - e0**2 + e1**2 + e2**2 + e3**2 = 1
+independent: [w1, w2, w3]
+bodies:
+  b: {mass: 1, position: [0, 0, 0], inertia: [A, B, C], rotation: [dw1, dw2, dw3]}
+"""
+
+
+@pytest.mark.parametrize("first_row", ["e0**2 + e1**2 - e2**2 - e3**2", "1 - 2*e2**2 - 2*e3**2"])
+def test_a_candidate_conserved_on_the_unit_sphere_only_is_conserved(tmp_path, first_row):
+    """A free body's angular momentum along N's x, R₁·(I ω), is an integral; R written with e·e = 1
+    applied (1 − 2 e₂² − 2 e₃²) is it on the sphere only, and both were 'not conserved': judged at
+    points off e·e = 1, and on it to 20 digits against a test at 1e-25."""
+    path = tmp_path / "free_body.yaml"
+    path.write_text(_FREE_QUATERNION_BODY, encoding="utf-8")
+    momentum = f"A*dot(w1)*({first_row}) + 2*B*dot(w2)*(e1*e2 - e0*e3) + 2*C*dot(w3)*(e1*e3 + e0*e2)"
+    kept = CliRunner().invoke(app, ["integrals", str(path), "--candidate", momentum])
+    assert kept.exit_code == 0, kept.output
+    last = kept.output.splitlines()[-1]
+    assert last.startswith("candidate 1:") and ": conserved" in last
+    broken = CliRunner().invoke(app, ["integrals", str(path), "--candidate", "A*dot(w1)*e0"])
+    assert broken.exit_code == 1 and "not conserved" in broken.output.splitlines()[-1]

@@ -49,21 +49,22 @@ class Decision:
     method: str
 
 
-def decide_zero(expr, seed: int = _SEED) -> Decision:
-    """Is ``expr`` identically zero? simplify() when small, else random points."""
+def decide_zero(expr, seed: int = _SEED, place: Callable[[dict], dict] | None = None) -> Decision:
+    """Is ``expr`` identically zero? simplify() when small, else random points; ``place`` moves each
+    point onto where the question is asked (Euler parameters onto their unit sphere)."""
     expr = as_expr(expr)
     if expr == 0:
         return Decision(True, "symbolic")
     if expr.is_Number:
         return Decision(False, "symbolic")
-    if _clearly_nonzero(expr):  # simplify would spend up to a second to say so (a loop's gaps: 0.5 s each)
+    if place is None and _clearly_nonzero(expr):  # simplify would take up to a second to say so
         return Decision(False, "numeric")
     simpler = _simplified(expr) if sp.count_ops(expr) <= SIMPLIFY_MAX_OPS else None
     if simpler == 0:
         return Decision(True, "symbolic")
     if simpler is not None and simpler.is_Number and simpler.is_finite:
         return Decision(False, "symbolic")
-    return _numeric_zero(expr, seed)
+    return _numeric_zero(expr, seed, place)
 
 
 class _TooSlow(Exception):
@@ -149,12 +150,12 @@ class _Alarm:
         return hook
 
 
-def _numeric_zero(expr: sp.Expr, seed: int) -> Decision:
+def _numeric_zero(expr: sp.Expr, seed: int, place: Callable[[dict], dict] | None = None) -> Decision:
     symbols = sorted(expr.free_symbols, key=lambda s: s.name)
     valid = 0
     # Positive points suit sqrt and log; signed ones catch abs and sign.
     points = sample_points(symbols, _POINTS // 2, seed) + sample_points(symbols, _POINTS // 2, seed + 1, signed=True)
-    for point in points:
+    for point in map(place, points) if place else points:
         try:
             value, scale = evaluate(expr, point)
         except UndefinedValue:

@@ -114,8 +114,27 @@ def _checked(derivation: Derivation, G: sp.Expr, tidy: bool = True) -> tuple[sp.
     rate = rate_along(derivation, G)
     if _expands_to_zero(rate):
         return G, True, "symbolic"
-    decision = decide_zero(rate)
+    decision = decide_zero(rate, place=_on_the_motion(derivation))
     return G, decision.zero, decision.method
+
+
+def _on_the_motion(derivation: Derivation):
+    """Points moved onto the spheres the motion keeps to (Euler parameters' e·e = 1), or None: a
+    candidate conserved there only was judged at points off it, and called broken."""
+    from gacli.numeric.spheres import scaled_onto, spheres
+
+    kept = spheres(derivation.system)
+    if not kept:
+        return None
+
+    def place(point: dict) -> dict:
+        point = dict(point)
+        for sphere in kept:  # a sphere's coordinates the rate does not hold still count in its norm
+            for i, y in enumerate(sphere.symbols):
+                point.setdefault(y, 0.4 + 0.1 * i)
+        return scaled_onto(point, kept, digits=50)  # the zero test compares to 1e-25 of the terms
+
+    return place
 
 
 def _expands_to_zero(expr: sp.Expr) -> bool:
