@@ -23,6 +23,7 @@ TIMEOUT_HELP = "Seconds allowed for the whole command (0: no limit)."
 # The same step names as gacli check's (gacli.check.STEP_READ, STEP_LOAD).
 STEP_READ = "reading the file"
 STEP_LOAD = "loading the declarations and expressions"
+STEP_PROGRAM = "building the program (frames, velocities and accelerations, eq. 14.14)"
 
 
 class _OutOfTime(OutOfTime):

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from gacli.algebra.graph import tree_nodes, trees_within
-from gacli.budget import STEP_LOAD, STEP_READ
+from gacli.budget import STEP_LOAD, STEP_PROGRAM, STEP_READ
 from gacli.loader.loading import load_in_stages
 from gacli.mechanics.equations import Derivation, derive, derive_for_code
 from gacli.mechanics.program.record import program_operations
@@ -99,11 +99,14 @@ def run_source(source: SourceFile, *, needs: str = CLOSED, progress: Callable[[s
     step = progress or (lambda name: None)
     step(STEP_LOAD)
     system, complete = load_in_stages(source)
+    step(STEP_PROGRAM)
     if needs == CODE and (program := derive_for_code(system)) is not None:
         return Run(source, system, program)
+    step(STEP_LOAD)
     system = complete()
     if loaded is not None:
         loaded(system)
+    step(STEP_PROGRAM)
     if needs == MATRICES and (program := derive_for_code(system)) is not None:
         return Run(source, system, program)
     if needs in (PRINTOUT, STEPS) and (program := derive_for_code(system)) is not None:

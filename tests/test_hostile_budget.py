@@ -88,7 +88,7 @@ def test_out_of_memory_in_a_step_is_one_located_message(monkeypatch):
     monkeypatch.setattr("gacli.pipeline.derive", exhausted)
     monkeypatch.setattr("gacli.pipeline.read_off", exhausted)  # the printout's route
     path = ROOT / "systems" / "particle_in_plane.yaml"
-    assert_located_error(run("derive", path), path, "ran out of memory in the step 'loading the declarations")
+    assert_located_error(run("derive", path), path, "ran out of memory in the step 'building the program")
 
 
 def test_out_of_memory_anywhere_is_one_message(monkeypatch):
@@ -262,14 +262,25 @@ def test_an_alarm_inside_a_finalizer_prints_no_traceback(monkeypatch):
     assert unraisable == []
 
 
-SLOW_PROGRAM = """
-gacli: 1
-name: slow_program
-parameters: {m: {value: 1}}
-coordinates: [x, y]
-bodies:
-  p: {mass: m, position: [(sin(x) + cos(y))**20, y, 0]}
-"""
+def _slow_program(n: int = 7) -> str:
+    """A chain of n links with its positions written out by the addition formulas (a CAS's output):
+    the builder reads them back as frames, seconds of work. ((sin x + cos y)**20 served here until
+    reductions were bounded by their input.)"""
+    import sympy as sp
+
+    q, lengths = sp.symbols(f"q1:{n + 1}"), sp.symbols(f"l1:{n + 1}")
+    lines = ["gacli: 1", "name: slow_program", "parameters:", "  g: {value: 9.81}"]
+    lines += [f"  m{i + 1}: {{value: 1}}\n  l{i + 1}: {{value: 1}}" for i in range(n)]
+    lines += [f"coordinates: [{', '.join(map(str, q))}]", "bodies:"]
+    x = y = sp.S.Zero
+    for i in range(n):
+        angle = sum(q[:i + 1])
+        cx = sp.expand(sp.expand_trig(x + lengths[i] * sp.cos(angle) / 2))
+        cy = sp.expand(sp.expand_trig(y + lengths[i] * sp.sin(angle) / 2))
+        lines += [f"  link{i + 1}: {{mass: m{i + 1}, position: [{cx}, {cy}], inertia: m{i + 1}*l{i + 1}**2/12, "
+                  f"rotation: {' + '.join('d' + str(v) for v in q[:i + 1])}}}"]
+        x, y = x + lengths[i] * sp.cos(angle), y + lengths[i] * sp.sin(angle)
+    return "\n".join(lines) + "\n"
 
 
 @pytest.mark.parametrize("command", [["check"], ["derive", "-f", "python"]])
@@ -277,6 +288,6 @@ def test_a_budget_spent_in_the_program_builder_is_not_taken_for_its_failure(comm
     # The builder's 'except Exception' caught the alarm: check said 'ok' at exactly its budget, and
     # derive -f python went on to the closed forms and wrote code after the budget ran out.
     path = tmp_path / "slow.yaml"
-    path.write_text(SLOW_PROGRAM)
+    path.write_text(_slow_program())
     result = run(*command, path, "--timeout", "2")
-    assert_located_error(result, path, "ran out of time")
+    assert_located_error(result, path, "ran out of time in the step 'building the program")
