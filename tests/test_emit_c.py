@@ -248,3 +248,20 @@ def test_math_h_names():
         assert is_math_h_name(name), name
     for name in ("x", "theta", "m_c", "phi_L", "yaw", "spin", "lean", "Omega"):
         assert not is_math_h_name(name), name
+
+
+@pytest.mark.parametrize("name", ["chaplygin_sleigh", "four_bar_linkage", "rolling_disk"])
+def test_the_header_sizes_lambda_as_many_as_the_python_reactions_return(name):
+    """A caller must allocate lambda: NAME_NLAMBDA, the count Python's reactions() returns."""
+    from gacli.emit.python import emit_python
+
+    d = derived(name)
+    lay = layout(d)
+    header = emit_c(d, reactions=True)[f"{name}.h"]
+    size = int(re.search(rf"#define {lay.prefix}_NLAMBDA (\d+)", header)[1])
+    namespace: dict = {}
+    (source,) = emit_python(d, reactions=True).values()
+    exec(source, namespace)  # noqa: S102 - our own generated code
+    p = [namespace["DEFAULTS"].get(n, 0.7) for n in namespace["PARAMETERS"]]
+    x = np.linspace(0.2, 0.6, len(namespace["STATE"]))
+    assert len(namespace["reactions"](0.0, x, p, [0.1] * len(namespace["INPUTS"]))) == size

@@ -229,7 +229,8 @@ def _reactions_declaration(derivation: Derivation, lay: Layout) -> str:
     count = len(derivation.system.constraints)
     numeric = ("" if displayable(derivation) else
                "\n   Found by solving the fundamental equations numerically; all NaN when they are singular.")
-    return (f"\n/* The constraint forces: {count} multipliers, one per constraint in the file's order\n"
+    size = _defines([(f"{lay.prefix}_NLAMBDA", str(count), "entries of lambda")])
+    return (f"\n{size}\n\n/* The constraint forces: {count} multipliers, one per constraint in the file's order\n"
             f"   (docs/verify.md gives their sign and units).{numeric} */\n{_signature(lay, 'reactions')};\n")
 
 
