@@ -100,10 +100,15 @@ def _exponentials(expr: sp.Expr, angles: list, w: list) -> sp.Expr:
         turn, back = sp.cos(offset) + sp.I * sp.sin(offset), sp.cos(offset) - sp.I * sp.sin(offset)
         return (W * turn + back / W) / 2 if isinstance(f, sp.cos) else (W * turn - back / W) / (2 * sp.I)
 
+    moving = set(angles)
     for term in sp.preorder_traversal(expr):
         if term.is_Mul and sum(isinstance(f, (sp.cos, sp.sin)) for f in term.args) > TRIG_FACTORS:
             raise NotTurned
-    moving = set(angles)
+        # Refused before anything is rebuilt: SymPy re-evaluates each function around a rewritten
+        # argument, and sin(sin(...(x))) sixty deep took minutes in its assumptions.
+        if isinstance(term, sp.Function) and term.free_symbols & moving and (
+                not isinstance(term, (sp.cos, sp.sin)) or term.args[0].has(sp.Function)):
+            raise NotTurned
     out = expr.replace(lambda e: isinstance(e, (sp.cos, sp.sin)) and bool(e.free_symbols & moving), rewritten)
     if any(isinstance(f, sp.Function) and f.free_symbols & moving for f in sp.preorder_traversal(out)):
         raise NotTurned
