@@ -253,3 +253,14 @@ def test_eulers_number_is_upright_in_latex_beside_a_parameter_named_e():
     printer = GacliLatexPrinter()
     assert printer.doprint(sp.E * e) in (r"\mathrm{e} e", r"e \mathrm{e}")
     assert printer.doprint(e * sp.exp(x)) == r"e \mathrm{e}^{x}"
+
+
+@pytest.mark.parametrize("name, worked", [("chaplygin_ball", True), ("satellite_reaction_wheels", True),
+                                          ("four_bar_linkage", False)])
+def test_steps_print_the_worked_solution_where_the_closed_forms_are_not_large(name, worked):
+    """README shows Chaplygin's ball's worked solution over four pages; --steps printed only 'too long
+    to read' and the named results, since the results alone print named (docs/printing.md)."""
+    result = CliRunner().invoke(app, ["derive", "--steps", str(SYSTEMS / f"{name}.yaml")])
+    assert result.exit_code == 0, result.output
+    assert ("Step 2b. Accelerations and the Gibbs function" in result.output) == worked
+    assert ("too long to read written out" in result.output) == (not worked)

@@ -210,7 +210,7 @@ def steps_report(d: Derivation) -> tuple[Section, ...]:
     from gacli.display.steps import worked_solution
 
     named = long_form(d)
-    if named is not None:
+    if named is not None and not L.steps_written_out(d):
         note = Section("Worked solution", (
             "The steps' closed forms are too long to read written out; the equations are written "
             "through the quantities they are built from instead (docs/printing.md).",))

@@ -24,6 +24,7 @@ from gacli.emit.latex_text import TEXT_LINE, tex_text
 from gacli.read.textsafe import one_line
 from gacli.mechanics.equations import Derivation
 from gacli.model import System
+from gacli.display.long import steps_written_out
 from gacli.display.report import long_form
 from gacli.version import __version__
 
@@ -47,7 +48,7 @@ def emit_latex(derivation: Derivation, *, standalone: bool = False, steps: bool 
     system = derivation.system
     printer = printer_for(system, {"fold_func_brackets": True})
     named = long_form(derivation)
-    if named is not None:
+    if named is not None and not (steps and steps_written_out(derivation)):
         # Long equations through the quantities they are built from, as the text report prints them.
         from gacli.emit.latex_named import named_sections
 
