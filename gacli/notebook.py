@@ -37,7 +37,7 @@ def _comments_as_text(tex: str) -> list[str]:
         if comment:
             out.append(" ".join(comment))
             comment = []
-        out.append(line)
+        out.append(line.removeprefix("\\noindent "))  # a paragraph command, not text MathJax shows
     return out + ([" ".join(comment)] if comment else [])
 
 

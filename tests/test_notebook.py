@@ -44,6 +44,9 @@ def test_the_bicycle_shows_its_equations_through_named_quantities(tmp_path):
     assert blocks(tex) == blocks(emit(d, "latex")["whipple_bicycle.tex"])
     assert "Named quantities" in tex and "M_{1,1}" in tex and "too large" not in tex
     assert "\\omega_{\\mathrm{rolled},y}" in tex  # the lean frame's angular velocity, by its name
+    # Its note once, as text: it stood in the section's comment and again after \noindent, which
+    # MathJax shows as it is.
+    assert tex.count("Each quantity is computed once") == 1 and "\\noindent" not in tex
     compile_math(tex, tmp_path)
 
 

@@ -95,7 +95,8 @@ def _comment(label: str, text: str) -> list[str]:
 def _fragment(sections) -> list[str]:
     lines: list[str] = []
     for section in sections:
-        comment = ". ".join(part for part in (section.title, section.note) if part)
+        # A note set as text below (shown) is not repeated in the comment: the notebook reads both.
+        comment = ". ".join(part for part in (section.title, "" if section.shown else section.note) if part)
         # Free text comes in lines (see _wrap): each must stay a comment.
         lines += [""] + [f"% {line}" for line in comment.split("\n")]
         lines += [r"\noindent " + section.note] if section.shown else []
