@@ -214,3 +214,20 @@ def test_abs_in_a_potential_and_sign_in_a_force_are_taken(tmp_path):
     for x, v in [(0.7, 0.3), (-0.4, 0.9), (0.2, -1.1), (-1.5, -0.2)]:
         acceleration = namespace["rhs"](0.0, [x, v], p)[1]
         assert acceleration == pytest.approx((-2 * (1 if x > 0 else -1) - (1 if v > 0 else -1)) / 1)
+
+
+@pytest.mark.parametrize("args", [["check"], ["derive"], ["verify"], ["linearize"]], ids=" ".join)
+@pytest.mark.parametrize("lines, line, column", [
+    # A finite relation is differentiated twice, as a position is (it took abs() as a form's once).
+    ("constraints:\n  - y - abs(x)\nbodies:\n  b: {mass: m, position: [x, y]}\n", 6, 9),
+    # SymPy builds sqrt(x**2) as Abs(x) for a real x: refused from the built expression.
+    ('bodies:\n  b: {mass: m, position: ["sqrt(x**2)", y]}\n', 6, 28),
+], ids=["holonomic", "sqrt_of_square"])
+def test_abs_that_the_parse_tree_does_not_show_as_twice_differentiated_is_refused(tmp_path, args, lines, line, column):
+    path = tmp_path / "kink.yaml"
+    path.write_text("gacli: 1\nname: kink\nparameters: {m: {value: 1}, k: {value: 2}}\ncoordinates: [x, y]\n"
+                    + lines, encoding="utf-8")
+    result = CliRunner().invoke(app, [*args, str(path)])
+    assert result.exit_code == 1, result.output
+    assert f"{path}:{line}:{column}: error: " in result.output and "abs() of something that moves" in result.output
+    assert "Traceback" not in result.output and "DiracDelta(" not in result.output

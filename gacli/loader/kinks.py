@@ -15,6 +15,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+import sympy as sp
+
+from gacli.algebra.graph import postorder
 from gacli.read.expr.grammar import Call, Node, walk
 
 # How many times each place is differentiated → the functions whose derivatives then hold δ.
@@ -33,6 +36,16 @@ def hint(call: Call, times: int) -> str:
     if times == 1:
         return f"write {call.func}(x) smoothly, as {smooth} (in a potential, k*x*sign(x) is k*abs(x))"
     return f"write {call.func}(x) smoothly, as {smooth}, or split the motion where x = 0"
+
+
+def built_kink(expr, times: int, moves) -> Call | None:
+    """An abs()/sign() SymPy made of what the file wrote (sqrt(x**2) is Abs(x) for a real x), as the
+    call :func:`message` names; None when there is none."""
+    kinked = {"abs": sp.Abs, "sign": sp.sign}
+    for name in KINKED.get(times, ()):
+        if any(isinstance(n, kinked[name]) and moves(n.args[0]) for n in postorder([expr])):
+            return Call(name, (), 0)
+    return None
 
 
 def kink(tree: Node, times: int, moves: Callable[[Node], bool]) -> Call | None:

@@ -140,22 +140,29 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
         except BuildError as exc:
             self.error(text, where, exc.message, exc.hint, offset=start + exc.pos)
         else:
-            times = self._differentiated(scope) if times is None else times
-            if call := kink(tree, times, lambda node: bool(build(node, scope).free_symbols - self._constants)):
+            times = self._differentiated(scope, expr) if times is None else times
+            moves = lambda e: bool(e.free_symbols - self._constants)  # noqa: E731
+            if call := kink(tree, times, lambda node: moves(build(node, scope))):
                 self.error(text, where, kinks.message(call, times), kinks.hint(call, times), offset=start + call.pos)
+            elif written := kinks.built_kink(expr, times, moves):  # sqrt(x**2) is Abs(x) once built
+                self.error(text, where, kinks.message(written, times), kinks.hint(written, times), offset=start)
             elif not (problem := imaginary_problem(expr, self.known)):
                 return expr
             else:
                 self.error(text, where, problem, offset=start)
         return None
 
-    def _differentiated(self, scope: Scope) -> int:
-        """How often the equations differentiate an expression of ``scope``'s places: positions, angles
-        and points twice; forms and constraints once; constants, loads and work never."""
+    def _differentiated(self, scope: Scope, expr: sp.Expr) -> int:
+        """How often the equations differentiate an expression of ``scope``'s places: positions, angles,
+        points and a constraint's finite relation (no differential, no rate) twice; forms and Pfaffian
+        or rate constraints once; constants, loads and work never."""
         scopes = getattr(self, "scopes", None)
         if scopes is None:
             return 0
-        return {id(scopes.config): 2, id(scopes.form): 1, id(scopes.constraint): 1}.get(id(scope), 0)
+        if scope is scopes.constraint:
+            rated = set(scope.differentials.values()) | {r for r in scope.rates.values() if r.is_Symbol}
+            return 1 if expr.free_symbols & rated else 2
+        return {id(scopes.config): 2, id(scopes.form): 1}.get(id(scope), 0)
 
     @property
     def _constants(self) -> set:
