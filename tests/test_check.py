@@ -240,13 +240,14 @@ def test_masses_twelve_decades_apart_are_positive_definite(tmp_path):
     assert report.errors == () and report.mass_matrix.positive_definite is True
 
 
-@pytest.mark.parametrize("written, value", [("1", 1), ("5e6", 5e6), ("-2.5", -2.5), (".5", 0.5)])
+@pytest.mark.parametrize("written, value", [("1", 1), ("5e6", 5e6), ("-2.5", -2.5), (".5", 0.5), ("1/2", 0.5),
+                                            ("2*pi", 6.283185307179586), ("exp(1)", 2.718281828459045)])
 def test_a_number_written_for_a_parameter_is_its_value(tmp_path, written, value):
     path = write(tmp_path, "short.yaml", GOOD.replace("m: {value: 1}", f"m: {written}").replace(
         "l: {value: 2}", "l: length of the rod"))
     system = load(path)
     by_name = {p.name: p for p in system.parameters}
-    assert float(by_name["m"].value) == value and by_name["m"].description == ""
+    assert float(by_name["m"].value) == pytest.approx(value, rel=1e-15) and by_name["m"].description == ""
     assert by_name["l"].value is None and by_name["l"].description == "length of the rod"
 
 

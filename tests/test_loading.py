@@ -295,7 +295,7 @@ def test_a_missing_file_is_said_to_be_missing(tmp_path):
 def test_a_greek_letter_for_a_name_is_told_how_to_print_it():
     with pytest.raises(SystemFileError) as info:
         loads("gacli: 1\nname: g\ncoordinates: [\u03b8]\nparameters: [m]\nbodies: {p: {mass: m, position: [x, 0]}}\n")
-    assert "'\u03b8' is not a valid name" in str(info.value) and "latex: \\theta" in str(info.value)
+    assert "'\u03b8' is not a valid name" in str(info.value) and "theta for \u03b8" in str(info.value)
 
 
 def test_a_parameter_that_is_its_own_value_is_told_so():

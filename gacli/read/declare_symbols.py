@@ -6,6 +6,8 @@ from __future__ import annotations
 import keyword
 import re
 
+from gacli.read.expr.grammar import ParseError, Rate, names, walk
+from gacli.read.expr.parser import parse
 from gacli.read.reader import Reader, describe
 from gacli.read.schema import (
     QUASI_KEYS,
@@ -23,6 +25,18 @@ from gacli.read.texsafe import check_math
 
 
 _NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
+
+
+def _constant(text: str) -> bool:
+    """Whether ``text`` is a number, or an expression of the grammar in numbers and pi alone (1/2,
+    2*pi, exp(1)): a value, where a description would leave the symbol without one, silently."""
+    if _NUMBER.match(text.strip()):
+        return True
+    try:
+        tree = parse(text)
+    except ParseError:
+        return False
+    return names(tree) <= {"pi"} and not any(isinstance(n, Rate) for n in walk(tree))
 
 
 def read_symbols(reader: Reader, top: dict) -> tuple[SymbolDecl, ...]:
@@ -69,8 +83,9 @@ def _symbol_entry(reader: Reader, kind: str, key: Scalar, value: Node, where: st
             return SymbolDecl(kind, key.text, key)
         if kind == "quasi":
             return SymbolDecl(kind, key.text, key, differential=reader.expression(value, where))
-        if kind in ("parameter", "function") and (value.kind in ("int", "float") or _NUMBER.match(value.text)):
-            # `m: 1` or `J: 5e6` means that value (no one describes a mass as "1"); text stays a description.
+        if kind in ("parameter", "function") and (value.kind in ("int", "float") or _constant(value.text)):
+            # `m: 1`, `J: 5e6` or `r: 2*pi` means that value (no one describes a mass as "1"); text stays
+            # a description.
             return SymbolDecl(kind, key.text, key, value=reader.expression(value, f"{where}.value"))
         return SymbolDecl(kind, key.text, key, description=value.text)
     allowed = QUASI_KEYS if kind == "quasi" else SYMBOL_KEYS

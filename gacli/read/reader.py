@@ -117,7 +117,7 @@ def _name_hint(text: str) -> str:
     rule = "a name is an ASCII letter or '_' followed by ASCII letters, digits and '_'"
     if any(ord(ch) > 127 for ch in text):
         # θ is a letter to a reader and to Python, not to the grammar: expressions are ASCII.
-        return rule + "; spell a Greek letter out (theta) and give it `latex: \\theta` for print"
+        return rule + "; spell it out in ASCII (theta for \u03b8, phi for \u03c6); a symbol's `latex:` key sets how it prints"
     return rule
 
 
