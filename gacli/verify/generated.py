@@ -61,7 +61,7 @@ class GeneratedCheck:
             return ""
         try:
             udot = column(mpmath.lu_solve(got["M"], got["F"]), k)
-        except (ZeroDivisionError, ArithmeticError, ValueError):
+        except (ZeroDivisionError, ArithmeticError, ValueError, TypeError):  # TypeError: mpmath on a NaN pivot
             for n in self.independent:
                 self.worst.add(S.rate_name(n, 2), mpmath.inf, 0, 1)
             return "generated code's M is singular at some samples"

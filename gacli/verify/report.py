@@ -115,7 +115,7 @@ def format_report(report: VerifyReport) -> list[str]:
     if shown == math.inf:
         lines.append("  M positive definite: not judged (no sample had physical parameters)")
     else:
-        lines.append(f"  M positive definite{which}: smallest eigenvalue / largest {shown:.3g}  "
+        lines.append(f"  M positive definite{which}: smallest eigenvalue / largest, scaled by its diagonal {shown:.3g}  "
                      f"{'ok' if report.mass_positive_definite else 'FAILED'}")
     for note in report.notes:
         lines.append(f"  note: {note}")

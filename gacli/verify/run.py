@@ -209,15 +209,23 @@ class _Run:
             self.worst_rates.add(S.rate_name(n, 1), a, b, floor)
 
     def _compare_mass(self, th: dict, unphysical: str) -> None:
-        """M symmetric and positive definite (its smallest eigenvalue over its largest)."""
+        """M symmetric and positive definite (the smallest eigenvalue over the largest of M scaled by its
+        diagonal, D^-1/2 M D^-1/2)."""
         M, k = th["M"], self.k
         if not k:
             return
         biggest = max(abs(M[i, j]) for i in range(k) for j in range(k))
         asym = max(abs(M[i, j] - M[j, i]) for i in range(k) for j in range(k))
         self.asymmetry = max(self.asymmetry, float(asym / biggest) if biggest else math.inf)
+        symmetric = (M + M.T) / 2
+        diagonal = [symmetric[i, i] for i in range(k)]
+        if all(d > 0 for d in diagonal):
+            # Judged whatever the units, as check judges it: a planet's 6e24 beside a probe's 1 is as
+            # definite as diag(1, 1) (the unscaled ratio, 1.7e-25, was 'FAILED').
+            scale = mpmath.diag([1 / mpmath.sqrt(d) for d in diagonal])
+            symmetric = scale * symmetric * scale
         try:
-            eig = mpmath.eigsy((M + M.T) / 2, eigvals_only=True)
+            eig = mpmath.eigsy(symmetric, eigvals_only=True)
             lo, hi = min(eig), max(abs(x) for x in eig)
             ratio = float(lo / hi) if hi else -math.inf
         except (ZeroDivisionError, ArithmeticError, ValueError):
