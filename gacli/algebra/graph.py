@@ -219,18 +219,38 @@ def _expanded_terms_new(expr: sp.Expr, limit: int, memo: dict) -> int:
             if total > limit:
                 break
         return total
-    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0 and expr.base.is_Add:
-        k = _expanded_terms(expr.base, limit, memo)
-        n = int(expr.exp)
-        # The multinomial count C(n + k − 1, k − 1), stopped as soon as it passes the limit.
-        total = 1
-        for i in range(1, min(n, k - 1) + 1):
-            total = total * (max(n, k - 1) + i) // i
-            if total > limit:
-                break
-        return total
+    if expr.is_Pow and expr.exp.is_Rational and abs(expr.exp) >= 1:
+        # (a + b)**n multinomially, (a b)**n as a**n b**n, and a denominator or a root's whole power
+        # ((x + y)**-50, (x + y)**50.5) too: SymPy's expand multiplies those out as well.
+        terms = _power_terms(expr.base, int(abs(expr.exp)), limit, memo)
+        if expr.exp.is_Integer and expr.exp > 0:
+            return terms
+        return limit + 1 if terms > limit else 1  # below a fraction bar or a root: work, and one term
     inside = (_expanded_terms(a, limit, memo) for a in expr.args if isinstance(a, sp.Expr))
     return limit + 1 if any(n > limit for n in inside) else 1
+
+
+def _power_terms(base: sp.Expr, n: int, limit: int, memo: dict) -> int:
+    """The terms of ``base``**n multiplied out (n ≥ 1), stopped past ``limit``."""
+    if base.is_Mul:
+        total = 1
+        for factor in base.args:
+            total *= _power_terms(factor, n, limit, memo)
+            if total > limit:
+                return limit + 1
+        return total
+    if base.is_Pow and base.exp.is_Rational and abs(base.exp) >= 1:
+        return _power_terms(base.base, n * int(abs(base.exp)), limit, memo)
+    k = _expanded_terms(base, limit, memo)
+    if k > limit:
+        return k
+    # The multinomial count C(n + k − 1, k − 1), stopped as soon as it passes the limit.
+    total = 1
+    for i in range(1, min(n, k - 1) + 1):
+        total = total * (max(n, k - 1) + i) // i
+        if total > limit:
+            break
+    return total
 
 
 def operations(exprs: Iterable[sp.Basic]) -> int:
