@@ -150,3 +150,14 @@ def test_coordinates_whose_rates_turn_are_not_said_to_move_at_constant_rates():
                                                "--format", "json"]).output)
     assert all(f["not_at_constant_rates"] in ([], ["e0", "e1", "e2", "e3"]) for f in data["families"])
     assert any(f["not_at_constant_rates"] for f in data["families"])
+
+
+def test_a_coordinate_inside_a_sign_is_not_ignorable(tmp_path):
+    """k|x| in a potential: the force −k sign(x) has a zero Jacobian on either side of the kink, and
+    x was 'moving at constant rates along every family', its family wrong (a reviewer's file)."""
+    path = tmp_path / "well.yaml"
+    path.write_text("gacli: 1\nname: well\nparameters: {m: 1, k: 2}\ncoordinates: [x, y]\n"
+                    "bodies:\n  p: {mass: m, position: [x, y, 0]}\npotential: k*abs(x) + k*y**2\n", encoding="utf-8")
+    result = CliRunner().invoke(app, ["steady", str(path)])
+    assert result.exit_code == 0, result.output
+    assert "constant rates along every family: x" not in result.output and "sign(x)" in result.output

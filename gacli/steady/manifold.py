@@ -23,6 +23,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sp
 
 from gacli.algebra import symbols as S
 from gacli.mechanics.equations import Derivation
@@ -68,11 +69,27 @@ def reduce_state(derivation: Derivation, parameters: Mapping[str, float]) -> Red
         A = linearize(at, parameters).A
         scale = max(1.0, float(np.abs(A).max()))
         depends |= np.abs(A[:, :len(names)]) > _ZERO * scale
+    for j in _kinked(derivation, names):
+        depends[len(names):, j] = True
     ignorable = _ignorable(names, depends)
     rates = {c: S.rate_name(c, 1) for c in names}
     held = tuple(c for c in names if c not in ignorable and rates[c] not in speeds)
     kept = tuple(c for c in names if c not in ignorable and c not in held)
     return Reduction(kept, speeds, ignorable, held)
+
+
+def _kinked(derivation: Derivation, names: tuple[str, ...]) -> list[int]:
+    """The coordinates inside a sign() or abs() of the equations: the Jacobian is zero on either side
+    of the kink, so k|x| in a potential (a force −k sign(x)) left x 'ignorable' and its family wrong."""
+    from gacli.algebra.graph import postorder
+
+    code = derivation.code
+    exprs = [*(e for _, e in code.kinematic_equations), *(e for _, e in code.mass_matrix), *code.forcing]
+    held = set()
+    for node in postorder(exprs):
+        if isinstance(node, (sp.sign, sp.Abs, sp.Heaviside)):
+            held |= {s.name for s in node.args[0].free_symbols}
+    return [j for j, c in enumerate(names) if c in held]
 
 
 def _ignorable(names: tuple[str, ...], depends: np.ndarray) -> tuple[str, ...]:
