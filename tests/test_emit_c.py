@@ -265,3 +265,13 @@ def test_the_header_sizes_lambda_as_many_as_the_python_reactions_return(name):
     p = [namespace["DEFAULTS"].get(n, 0.7) for n in namespace["PARAMETERS"]]
     x = np.linspace(0.2, 0.6, len(namespace["STATE"]))
     assert len(namespace["reactions"](0.0, x, p, [0.1] * len(namespace["INPUTS"]))) == size
+
+
+def test_a_default_written_with_eulers_number_is_commented_in_the_file_s_grammar(tmp_path):
+    """'/* E */' beside m = exp(1) read as the parameter E."""
+    from gacli.loader.loading import loads
+
+    system = loads("gacli: 1\nname: s\nparameters: {m: {value: exp(1)}, E: 3}\ncoordinates: [x]\n"
+                   "bodies: {b: {mass: m, position: [x, 0]}}\npotential: E*x**2\n")
+    source = emit_c(derive(system))["s.c"]
+    assert "/* exp(1) */" in source and "/* E */" not in source

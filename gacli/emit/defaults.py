@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from gacli.algebra.readable import show
 from gacli.emit.naming import Entry, Layout
 from gacli.mechanics.equations import Derivation
 from gacli.read.textsafe import one_line
@@ -36,7 +37,8 @@ def defaults(derivation: Derivation, lay: Layout) -> tuple[Default, ...]:
     rows = []
     for entry in lay.parameter_entries:
         text = written[entry.name]
-        formula = "" if text is None or text.is_Number else one_line(str(text))
+        # In the file's grammar (exp(1), not SymPy's E, which a parameter may be named).
+        formula = "" if text is None or text.is_Number else one_line(show(text))
         rows.append(Default(entry, lay.defaults.get(entry.name), formula, text is not None))
     return tuple(rows)
 
