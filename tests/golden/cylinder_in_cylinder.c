@@ -110,7 +110,7 @@ int cylinder_in_cylinder_default_parameters(double *p)
     p[CYLINDER_IN_CYLINDER_P_G] = 9.81;
     p[CYLINDER_IN_CYLINDER_P_A] = 0.1;
     p[CYLINDER_IN_CYLINDER_P_B] = 0.5;
-    p[CYLINDER_IN_CYLINDER_P_C] = 0.4; /* -a + b */
+    p[CYLINDER_IN_CYLINDER_P_C] = 0.4; /* b - a */
     return 0;
 }
 

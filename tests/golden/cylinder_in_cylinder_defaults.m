@@ -10,5 +10,5 @@ function p = cylinder_in_cylinder_defaults()
   p(2) = 9.81;  % g
   p(3) = 0.1;  % a
   p(4) = 0.5;  % b
-  p(5) = 0.4;  % c = -a + b
+  p(5) = 0.4;  % c = b - a
 end
