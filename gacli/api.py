@@ -11,13 +11,9 @@ back up here.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from gacli import notebook  # noqa: F401  (on import, Derivation gets _repr_latex_)
 from gacli.emit import derived, emit
-from gacli.mechanics import equations
 from gacli.mechanics.equations import Derivation
-from gacli.model import System
 
 __all__ = ["Derivation", "derive", "emit"]
 
@@ -25,13 +21,7 @@ __all__ = ["Derivation", "derive", "emit"]
 def derive(system, *, progress=None) -> Derivation:
     """The Gibbs-Appell equations of a System (``gacli.load``), or of a system file's path, loaded first
     (the steps: :func:`gacli.mechanics.equations.derive`)."""
-    if isinstance(system, System):
-        return equations.derive(system, progress=progress)
-    if isinstance(system, (str, Path)):  # loaded here, so that its steps reach ``progress`` too
-        from gacli.loader.loading import load
-
-        return equations.derive(load(system), progress=progress)
-    return derived(system)
+    return derived(system, progress=progress)
 
 
 def _solvable(system) -> Derivation:

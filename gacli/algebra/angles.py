@@ -27,7 +27,7 @@ import random
 import sympy as sp
 
 from gacli.algebra import trig
-from gacli.algebra.graph import expanded_terms, is_small, postorder
+from gacli.algebra.graph import expands_within, is_small, postorder
 
 # Angles past which no pair is tried: each pair costs two reductions.
 _MAX_ANGLES = 4
@@ -72,7 +72,7 @@ def reduced(expr: sp.Expr) -> sp.Expr:
     """A small closed form distributed, with sin² + cos² = 1 and its pairs of angles written through
     their difference: a loop's row turned about the coupler, cos θ₂ (−l sin θ₁) + sin θ₂ (l cos θ₁),
     is −l sin(θ₁ − θ₂)."""
-    if expanded_terms(expr, trig.MAX_TERMS) > trig.MAX_TERMS:
+    if not expands_within(expr, trig.MAX_TERMS):
         return expr  # no reduction would take it, and SymPy's expand of (x + y + z)**60 never ends
     return relative(trig.reduce(sp.expand(expr), cancel=True))
 
@@ -82,7 +82,7 @@ def reduced_by(expr: sp.Expr, rates: list[sp.Symbol], each=None) -> sp.Expr:
     velocity-product term holds the angles of one link, which only apart are written through their
     differences."""
     each = each or reduced
-    if expanded_terms(expr, trig.MAX_TERMS) > trig.MAX_TERMS:
+    if not expands_within(expr, trig.MAX_TERMS):
         return expr
     groups: dict[sp.Expr, list[sp.Expr]] = {}
     for term in sp.Add.make_args(sp.expand(expr)):

@@ -13,7 +13,7 @@ import functools
 
 import sympy as sp
 
-from gacli.algebra.graph import expanded_terms, postorder, trees_within
+from gacli.algebra.graph import expands_within, postorder, trees_within
 
 # A coefficient is multiplied out to see whether it cancels only below this many terms.
 COEFFICIENT_TERMS = 400
@@ -26,7 +26,7 @@ def multiplied_out(total: sp.Expr) -> sp.Expr:
     of parameters, m₁ + m₂, stays whole where it would lengthen), and only where a term has a sum
     to open: a loop's monomials over its dead point stay as many terms."""
     if not total.is_Add or not any(map(_distributes, total.args)) or \
-            expanded_terms(total, COEFFICIENT_TERMS) > COEFFICIENT_TERMS or not small_or_whole(total):
+            not expands_within(total, COEFFICIENT_TERMS) or not small_or_whole(total):
         return total
     expanded = sp.expand(total, power_base=False, power_exp=False, log=False)  # products and powers of sums alone
     return expanded if len(sp.Add.make_args(expanded)) < len(total.args) else total

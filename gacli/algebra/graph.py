@@ -197,6 +197,12 @@ def expanded_terms(expr: sp.Expr, limit: int) -> int:
     return _expanded_terms(expr, limit, {})
 
 
+def expands_within(expr: sp.Expr, limit: int) -> bool:
+    """Whether multiplying ``expr`` out stays within ``limit`` terms (:func:`expanded_terms`): asked
+    before SymPy's expand runs, whose cost a small tree does not bound."""
+    return expanded_terms(expr, limit) <= limit
+
+
 def _expanded_terms(expr: sp.Expr, limit: int, memo: dict) -> int:
     known = memo.get(expr)
     if known is None:

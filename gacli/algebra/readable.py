@@ -31,7 +31,7 @@ from gacli.algebra.coefficients import small_or_whole
 from gacli.algebra.signs import with_signs
 from gacli.algebra.symbols import RATE_NAME
 from gacli.algebra.terms import factor_terms
-from gacli.algebra.graph import LARGE_TREE, expanded_terms, is_large, is_small, postorder
+from gacli.algebra.graph import LARGE_TREE, expands_within, is_large, is_small, postorder
 
 # A quotient is cancelled (which expands numerator and denominator) only up
 # to this many operations.
@@ -42,6 +42,8 @@ FACTOR_NODES = 5_000
 # An expression in the rates is multiplied out and collected on their products
 # only while it would have at most this many terms.
 COLLECT_TERMS = 2_000
+# Any other expression is multiplied out (or cancelled) only while it would have at most this many.
+EXPANDED_TERMS = 2_000
 # The budget of one step, counted in operations handed to simplify rather
 # than in seconds, so that the output is the same on a slow machine.
 STEP_BUDGET_OPS = 5_000
@@ -95,7 +97,7 @@ class Tidy:
         is small (counted first); the caller keeps it when it prints shorter.
         """
         rates = sorted((s for s in expr.free_symbols if RATE_NAME.match(s.name)), key=sp.default_sort_key)
-        if not rates or not _expands_small(expr, COLLECT_TERMS) or not small_or_whole(expr):
+        if not rates or not expands_within(expr, COLLECT_TERMS) or not small_or_whole(expr):
             return None
         groups: dict[sp.Expr, list[sp.Expr]] = {}
         for term in sp.Add.make_args(sp.expand(expr)):
@@ -117,7 +119,7 @@ class Tidy:
 
     def collected(self, expr: sp.Expr, accelerations) -> sp.Expr:
         """Collected on the accelerations, each coefficient tidied."""
-        expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) and _expands_small(expr) else expr
+        expanded = sp.expand(expr) if is_small(expr, 2 * SIMPLIFY_OPS) and expands_within(expr, EXPANDED_TERMS) else expr
         parts = sp.collect(expanded, list(accelerations), evaluate=False)
         total = sp.S.Zero
         for key in sorted(parts, key=sp.default_sort_key):
@@ -132,12 +134,12 @@ def readable(expr: sp.Expr) -> sp.Expr:
     (each coefficient factored) is read too, and the shorter kept.
     """
     expr = trig.reduce(expr)  # a second time costs little: nothing is left to distribute
-    if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and _expands_small(expr):
+    if _is_quotient(expr) and is_small(expr, SIMPLIFY_OPS) and expands_within(expr, EXPANDED_TERMS):
         cancelled = trig.reduce(sp.cancel(expr))  # cancel multiplies out, and may rebuild sin² + cos²
         if sp.count_ops(cancelled) < sp.count_ops(expr):
             expr = cancelled
     plain = factor_terms(expr)
-    if not expr.has(sp.sin, sp.cos) or not _expands_small(expr, COLLECT_TERMS // 4):
+    if not expr.has(sp.sin, sp.cos) or not expands_within(expr, COLLECT_TERMS // 4):
         return plain
     by_angles = collected(sp.expand(expr))
     return by_angles if len(str(by_angles)) < len(str(plain)) else plain
@@ -152,10 +154,10 @@ def over_common_denominator(expr: sp.Expr) -> sp.Expr | None:
     beside its own part of the numerator, and a coefficient such as m_c L² c² repeats
     under both. Monomial denominators (the r² of C_w/r²) stay in the coefficients.
     """
-    if not _expands_small(expr, COLLECT_TERMS) or len(_sum_denominators(expr)) > MAX_DENOMINATORS:
+    if not expands_within(expr, COLLECT_TERMS) or len(_sum_denominators(expr)) > MAX_DENOMINATORS:
         return None
     numerator, denominator = sp.fraction(sp.together(expr))
-    if not _expands_small(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
+    if not expands_within(numerator, COLLECT_TERMS) or not is_small(denominator, SIMPLIFY_OPS):
         return None
     sums, monomials = [], []
     # A sine in the denominator is brought over only in a small quotient (a loop's dependent rate):
@@ -242,11 +244,6 @@ def _has_denominator(expr: sp.Expr) -> bool:
 def _is_quotient(expr: sp.Expr) -> bool:
     """Whether some term has a symbolic denominator (where cancel can help)."""
     return any(not sp.fraction(term)[1].is_Number for term in sp.Add.make_args(expr))
-
-
-def _expands_small(expr: sp.Expr, limit: int = 2_000) -> bool:
-    """Whether multiplying ``expr`` out stays under ``limit`` terms (counted without expanding)."""
-    return expanded_terms(expr, limit) <= limit
 
 
 # A symbolically solved quotient (the constraint forces, M⁻¹F put in) is

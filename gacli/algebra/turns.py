@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from gacli.algebra.graph import expanded_terms, trees_within
+from gacli.algebra.graph import expands_within, trees_within
 from gacli.algebra.turn_products import PRODUCTS_NODES, TRIG_FACTORS, NotTurned, products
 
 # Tree nodes of what SymPy's expand rewrites, at most (trig factors in one product: TRIG_FACTORS, as
@@ -46,7 +46,7 @@ def _expanded(expr: sp.Expr, angles: list[sp.Symbol]) -> dict[tuple, sp.Expr] | 
         return None
     # Counted before SymPy's expand forms them: (x + y + z)**100 is a tree of six nodes and 5,151
     # terms, and its expansion took minutes and gigabytes.
-    if expanded_terms(exponentials, TURNED_TERMS) > TURNED_TERMS:
+    if not expands_within(exponentials, TURNED_TERMS):
         return None
     written = sp.expand(exponentials)
     out: dict[tuple, sp.Expr] = {}

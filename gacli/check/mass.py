@@ -14,6 +14,7 @@ from gacli.algebra.graph import free_symbols, postorder
 from gacli.mechanics.program.record import inline
 from gacli.model import System
 from gacli.numeric import UndefinedValue, evaluate, parameter_values, sample_points
+from gacli.numeric.definite import diagonally_scaled
 from gacli.numeric.samples import SAMPLE_INTERVAL
 from gacli.numeric.spheres import on_spheres
 from gacli.numeric.zero import decide_zero
@@ -133,19 +134,12 @@ def _positive_definite(system: System, M, values, symmetric, findings,
 
 
 def _definite(numeric: np.ndarray) -> bool:
-    """Whether ``numeric`` is positive definite beyond rounding, whatever the units of its rates.
-
-    Judged on D^-1/2 M D^-1/2 (D its diagonal), whose diagonal is 1: a satellite's 5e6 kg m² beside a
-    wheel's 2e-6 is as definite as diag(1, 1), though its eigenvalues span 12 decades (a test
-    relative to the largest entry refused it; generated code's Cholesky solves it)."""
+    """Whether ``numeric`` is positive definite beyond rounding, whatever the units of its rates
+    (gacli.numeric.definite)."""
     if not numeric.size:
         return True
-    symmetric = (numeric + numeric.T) / 2
-    diagonal = np.diag(symmetric)
-    if not (diagonal > 0).all():
-        return False
-    scale = 1 / np.sqrt(diagonal)
-    return float(np.linalg.eigvalsh(symmetric * np.outer(scale, scale)).min()) > 1e-12
+    scaled = diagonally_scaled(numeric, len(numeric))
+    return scaled is not None and float(np.linalg.eigvalsh(np.array(scaled, dtype=float)).min()) > 1e-12
 
 
 # Where no sample of [0.3, 1.7] gives every position a real value (a pendulum of length 0.25 placed by

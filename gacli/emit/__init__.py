@@ -89,8 +89,9 @@ def emit(derivation: Derivation, format: str, **options) -> dict[str, str]:
     return emitter(derived(derivation), **options)
 
 
-def derived(what) -> Derivation:
-    """A Derivation from itself, a System or a system file's path; a TypeError that says which, else."""
+def derived(what, progress=None) -> Derivation:
+    """A Derivation from itself, a System or a system file's path (``progress`` sees the steps of
+    deriving it); a TypeError that says which, else."""
     from pathlib import Path
 
     from gacli.loader.loading import load
@@ -100,7 +101,7 @@ def derived(what) -> Derivation:
     if isinstance(what, (str, Path)):
         what = load(what)
     if isinstance(what, System):
-        return derive(what)
+        return derive(what, progress=progress)
     if not isinstance(what, Derivation):
         raise TypeError(f"expected what gacli.derive returns, a System (gacli.load) or a path; got {type(what).__name__}")
     return what

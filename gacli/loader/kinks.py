@@ -26,26 +26,29 @@ KINKED = {1: ("sign",), 2: ("abs", "sign")}
 _TIMES = {1: "once", 2: "twice"}
 
 
-def message(call: Call, times: int) -> str:
-    return (f"{call.func}() of something that moves: this expression is differentiated {_TIMES[times]}, "
+def message(func: str, times: int) -> str:
+    return (f"{func}() of something that moves: this expression is differentiated {_TIMES[times]}, "
             f"which gives an impulse (DiracDelta) where the argument is 0")
 
 
-def hint(call: Call, times: int) -> str:
-    smooth = "sqrt(x**2 + eps**2)" if call.func == "abs" else "x/sqrt(x**2 + eps**2)"
+def hint(func: str, times: int) -> str:
+    smooth = "sqrt(x**2 + eps**2)" if func == "abs" else "x/sqrt(x**2 + eps**2)"
     if times == 1:
-        return f"write {call.func}(x) smoothly, as {smooth} (in a potential, k*x*sign(x) is k*abs(x))"
-    return f"write {call.func}(x) smoothly, as {smooth}, or split the motion where x = 0"
+        return f"write {func}(x) smoothly, as {smooth} (in a potential, k*x*sign(x) is k*abs(x))"
+    return f"write {func}(x) smoothly, as {smooth}, or split the motion where x = 0"
 
 
-def built_kink(expr, times: int, moves) -> Call | None:
-    """An abs()/sign() SymPy made of what the file wrote (sqrt(x**2) is Abs(x) for a real x), as the
-    call :func:`message` names; None when there is none."""
-    kinked = {"abs": sp.Abs, "sign": sp.sign}
-    for name in KINKED.get(times, ()):
-        if any(isinstance(n, kinked[name]) and moves(n.args[0]) for n in postorder([expr])):
-            return Call(name, (), 0)
-    return None
+def built_kink(expr, times: int, moves) -> str:
+    """The name of an abs()/sign() SymPy made of what the file wrote (sqrt(x**2) is Abs(x) for a real
+    x) whose argument ``moves``; "" when there is none."""
+    kinked = tuple(_BUILT[name] for name in KINKED.get(times, ()))
+    for node in postorder([expr]):
+        if isinstance(node, kinked) and moves(node.args[0]):
+            return "abs" if isinstance(node, sp.Abs) else "sign"
+    return ""
+
+
+_BUILT = {"abs": sp.Abs, "sign": sp.sign}
 
 
 def kink(tree: Node, times: int, moves: Callable[[Node], bool]) -> Call | None:

@@ -143,7 +143,8 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
             times = self._differentiated(scope, expr) if times is None else times
             moves = lambda e: bool(e.free_symbols - self._constants)  # noqa: E731
             if call := kink(tree, times, lambda node: moves(build(node, scope))):
-                self.error(text, where, kinks.message(call, times), kinks.hint(call, times), offset=start + call.pos)
+                self.error(text, where, kinks.message(call.func, times), kinks.hint(call.func, times),
+                           offset=start + call.pos)
             elif written := kinks.built_kink(expr, times, moves):  # sqrt(x**2) is Abs(x) once built
                 self.error(text, where, kinks.message(written, times), kinks.hint(written, times), offset=start)
             elif not (problem := imaginary_problem(expr, self.known)):
@@ -162,7 +163,7 @@ class _Builder(Forms, Geometry, RollingContacts, Lines, MovedInertia, Quaternion
         if scope is scopes.constraint:
             rated = set(scope.differentials.values()) | {r for r in scope.rates.values() if r.is_Symbol}
             return 1 if expr.free_symbols & rated else 2
-        return {id(scopes.config): 2, id(scopes.form): 1}.get(id(scope), 0)
+        return 2 if scope is scopes.config else 1 if scope is scopes.form else 0
 
     @property
     def _constants(self) -> set:

@@ -239,8 +239,9 @@ def _distinct(families, unknowns) -> list[Family]:
 def _within(f: Family, g: Family) -> bool:
     """Whether every motion of ``f`` is one of ``g``: g asks no condition, and its values and relations
     are among f's (f fixes more)."""
-    return not g.conditions and set(g.values) < set(f.values) and set(g.relations) <= set(f.relations) or \
-        not g.conditions and set(g.values) <= set(f.values) and set(g.relations) < set(f.relations)
+    fixed, related = set(f.values), set(f.relations)
+    return not g.conditions and set(g.values) <= fixed and set(g.relations) <= related and \
+        (set(g.values), set(g.relations)) != (fixed, related)
 
 
 def _vanishes(e: sp.Expr) -> bool:

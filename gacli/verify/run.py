@@ -21,6 +21,7 @@ from gacli.algebra import symbols as S
 from gacli.model import System
 from gacli.numeric import precise_parameter_values, sample_parameters
 from gacli.numeric.compiled import Compiled
+from gacli.numeric.definite import diagonally_scaled
 from gacli.numeric.spheres import scaled_onto
 from gacli.algebra.readable import displayable
 from gacli.verify.fundamental import (
@@ -217,13 +218,10 @@ class _Run:
         biggest = max(abs(M[i, j]) for i in range(k) for j in range(k))
         asym = max(abs(M[i, j] - M[j, i]) for i in range(k) for j in range(k))
         self.asymmetry = max(self.asymmetry, float(asym / biggest) if biggest else math.inf)
-        symmetric = (M + M.T) / 2
-        diagonal = [symmetric[i, i] for i in range(k)]
-        if all(d > 0 for d in diagonal):
-            # Judged whatever the units, as check judges it: a planet's 6e24 beside a probe's 1 is as
-            # definite as diag(1, 1) (the unscaled ratio, 1.7e-25, was 'FAILED').
-            scale = mpmath.diag([1 / mpmath.sqrt(d) for d in diagonal])
-            symmetric = scale * symmetric * scale
+        # Judged whatever the units, as check judges it (gacli.numeric.definite): the unscaled ratio
+        # of a planet's 6e24 beside a probe's 1, 1.7e-25, 'FAILED'.
+        scaled = diagonally_scaled(M, k)
+        symmetric = mpmath.matrix(scaled) if scaled is not None else (M + M.T) / 2
         try:
             eig = mpmath.eigsy(symmetric, eigvals_only=True)
             lo, hi = min(eig), max(abs(x) for x in eig)
